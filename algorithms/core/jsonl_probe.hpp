@@ -1,0 +1,80 @@
+// Streams each step as one JSON line as soon as the next one starts (or on finish()), so memory
+// stays flat for any trace length. Format: docs/trace-format.md.
+#pragma once
+#include <ostream>
+#include <string>
+#include "core/number.hpp"
+#include "core/step.hpp"
+#include "core/vec.hpp"
+
+namespace sw {
+
+template <class Num> class JsonlProbe {
+ public:
+  static constexpr bool on = true;
+
+  explicit JsonlProbe(std::ostream& out) : out_(out) {}
+  JsonlProbe(const JsonlProbe&) = delete;
+  ~JsonlProbe() { finish(); }
+
+  JsonlProbe& step(std::uint32_t line, StepKind kind) {
+    finish();
+    open_ = true;
+    line_ = "{\"step\":" + std::to_string(count_++) + ",\"line\":" + std::to_string(line) + ",\"kind\":\"";
+    line_ += kind_name(kind);
+    line_ += "\",\"vars\":{";
+    geo_.clear();
+    first_var_ = true;
+    return *this;
+  }
+  JsonlProbe& num(const char* name, const Num& v) { return add_var(name, json_value(v)); }
+  JsonlProbe& idx(const char* name, std::int64_t v) { return add_var(name, std::to_string(v)); }
+  JsonlProbe& pixel(Pixel p) {
+    open_geo(GeoKind::pixel);
+    geo_ += std::to_string(p.x) + ',' + std::to_string(p.y) + "]}";
+    return *this;
+  }
+  template <class... V> JsonlProbe& geo(GeoKind kind, const V&... values) {
+    open_geo(kind);
+    bool first = true;
+    ((geo_ += (first ? "" : ","), geo_ += json_value(Num(values)), first = false), ...);
+    geo_ += "]}";
+    return *this;
+  }
+  JsonlProbe& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
+  JsonlProbe& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
+
+  void finish() {
+    if (!open_) return;
+    line_ += "},\"geo\":[";
+    line_ += geo_;
+    line_ += "]}\n";
+    out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+    open_ = false;
+  }
+  std::uint64_t count() const { return count_; }
+
+ private:
+  JsonlProbe& add_var(const char* name, const std::string& text) {
+    if (!first_var_) line_ += ',';
+    first_var_ = false;
+    line_ += '"';
+    line_ += name;
+    line_ += "\":";
+    line_ += text;
+    return *this;
+  }
+  void open_geo(GeoKind kind) {
+    if (!geo_.empty()) geo_ += ',';
+    geo_ += "{\"";
+    geo_ += geo_name(kind);
+    geo_ += "\":[";
+  }
+
+  std::ostream& out_;
+  std::string line_, geo_;
+  std::uint64_t count_ = 0;
+  bool open_ = false, first_var_ = true;
+};
+
+}  // namespace sw

@@ -1,0 +1,97 @@
+// Number policies: one algorithm body runs on float, double, int64, exact rationals (GMP mpq) and
+// filtered intervals. Algorithms only use + - * /, comparisons and the helpers in namespace num.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <gmpxx.h>
+
+namespace sw {
+
+enum class Numeric : std::uint8_t { f32, f64, integer, filtered, exact };
+
+constexpr std::string_view numeric_name(Numeric n) {
+  switch (n) {
+    case Numeric::f32: return "float";
+    case Numeric::f64: return "double";
+    case Numeric::integer: return "int";
+    case Numeric::filtered: return "filtered";
+    case Numeric::exact: return "exact";
+  }
+  return "?";
+}
+
+inline std::optional<Numeric> parse_numeric(std::string_view s) {
+  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact})
+    if (numeric_name(n) == s) return n;
+  return std::nullopt;
+}
+
+using Rational = mpq_class;
+class Interval;  // core/interval.hpp
+
+namespace num {
+
+// Largest integer <= x, and smallest integer >= x.
+inline std::int64_t floor_int(float x) { return static_cast<std::int64_t>(std::floor(x)); }
+inline std::int64_t floor_int(double x) { return static_cast<std::int64_t>(std::floor(x)); }
+inline std::int64_t floor_int(std::int64_t x) { return x; }
+inline std::int64_t floor_int(const Rational& x) {
+  mpz_class q;
+  mpz_fdiv_q(q.get_mpz_t(), x.get_num_mpz_t(), x.get_den_mpz_t());
+  return q.get_si();
+}
+std::int64_t floor_int(const Interval& x);
+template <class T> std::int64_t ceil_int(const T& x) { return -floor_int(T(-x)); }
+
+inline double to_double(float x) { return x; }
+inline double to_double(double x) { return x; }
+inline double to_double(std::int64_t x) { return static_cast<double>(x); }
+inline double to_double(const Rational& x) { return x.get_d(); }
+double to_double(const Interval& x);
+
+template <class T> T abs(const T& x) { return x < T(0) ? T(-x) : x; }
+template <class T> int sign(const T& x) { return (T(0) < x) - (x < T(0)); }
+
+// Converts an exact input value to T, rounding to nearest (ties to even) for float and double.
+template <class T> T from_rational(const Rational& q);
+template <> float from_rational<float>(const Rational& q);
+template <> double from_rational<double>(const Rational& q);
+template <> std::int64_t from_rational<std::int64_t>(const Rational& q);
+template <> Rational from_rational<Rational>(const Rational& q);
+
+// Lossless text: shortest round-trip decimal for float/double (read back as a double, it is the
+// same value), "p/q" or "n" for rationals, the integer for int64.
+std::string to_text(float x);
+std::string to_text(double x);
+std::string to_text(std::int64_t x);
+std::string to_text(const Rational& x);
+std::string to_text(const Interval& x);
+
+// The exact rational value of a finite float or double.
+Rational to_rational(double x);
+
+}  // namespace num
+
+}  // namespace sw
+
+#include "core/interval.hpp"  // filtered numbers; needs the declarations above
+
+namespace sw {
+
+template <class T> struct NumericOf;
+template <> struct NumericOf<float> { static constexpr Numeric value = Numeric::f32; };
+template <> struct NumericOf<double> { static constexpr Numeric value = Numeric::f64; };
+template <> struct NumericOf<std::int64_t> { static constexpr Numeric value = Numeric::integer; };
+template <> struct NumericOf<Rational> { static constexpr Numeric value = Numeric::exact; };
+template <> struct NumericOf<Interval> { static constexpr Numeric value = Numeric::filtered; };
+
+// Lossless JSON text for a value: strings for rationals, numbers otherwise.
+template <class T> std::string json_value(const T& x) {
+  if constexpr (std::is_same_v<T, Rational>) return '"' + num::to_text(x) + '"';
+  else return num::to_text(x);
+}
+
+}  // namespace sw

@@ -1,0 +1,68 @@
+// Bresenham: the integer-only DDA for integer endpoints. Walks from p0 toward p1 (p1 excluded),
+// one pixel per major-axis unit, choosing the minor step with a decision variable e.
+// Semantics: docs/semantics/lines.md.
+#pragma once
+#include <array>
+#include <string_view>
+#include <vector>
+#include "core/number.hpp"
+#include "core/probe.hpp"
+#include "core/vec.hpp"
+
+namespace sw::raster {
+
+struct BresenhamLine {
+  static constexpr std::string_view id = "bresenham-line";
+  static constexpr std::string_view summary = "Bresenham: integer endpoints, integer decision variable, p1 excluded";
+  enum Line : std::uint32_t { delta = 1, major, signs, decision, loop, plot, test, minor_step, major_step, done };
+  static constexpr std::array<std::string_view, 10> lines = {
+      "d <- p1 - p0                              -- integer endpoints",
+      "a <- x if |dx| > |dy|, else y; b <- the other axis   -- ties step rows",
+      "s_a <- sign(d_a); s_b <- sign(d_b); A <- |d_a|; B <- |d_b|",
+      "e <- 2B - A                               -- 2A x (minor offset of the next sample - 1/2)",
+      "p <- p0; repeat A times:",
+      "    plot p",
+      "    if e > 0, or e = 0 and s_b > 0:        -- a tie rounds up: floor(v + 1/2)",
+      "        p_b <- p_b + s_b; e <- e - 2A",
+      "    p_a <- p_a + s_a; e <- e + 2B",
+      "done",
+  };
+  static constexpr Listing listing() { return {"Bresenham line", lines}; }
+};
+
+// Precondition: p0 and p1 have integer coordinates (the caller validates this).
+template <class Num, class Probe = NoProbe>
+bool bresenham_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe) {
+  using L = BresenhamLine;
+  const Vec2<Num> d = p1 - p0;
+  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).geo(GeoKind::segment2, p0.x, p0.y, p1.x, p1.y);
+  const int a = num::abs(d.x) > num::abs(d.y) ? 0 : 1, b = 1 - a;
+  if constexpr (Probe::on) probe.step(L::major, StepKind::decide).idx("a", a);
+  const int sa = num::sign(d[a]), sb = num::sign(d[b]);
+  const Num A = num::abs(d[a]), B = num::abs(d[b]);
+  if constexpr (Probe::on) probe.step(L::signs, StepKind::init).idx("s_a", sa).idx("s_b", sb).num("A", A).num("B", B);
+  Num e = Num(Num(2) * B - A);
+  if constexpr (Probe::on) probe.step(L::decision, StepKind::init).num("e", e);
+  Vec2<Num> p = p0;
+  const std::int64_t count = num::floor_int(A);
+  if constexpr (Probe::on) probe.step(L::loop, StepKind::init).idx("count", count).point(p);
+  for (std::int64_t k = 0; k < count; ++k) {
+    const Pixel px{num::floor_int(p.x), num::floor_int(p.y)};
+    out.push_back(px);
+    if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).num("e", e).pixel(px);
+    const bool up = e > Num(0) || (e == Num(0) && sb > 0);
+    if constexpr (Probe::on) probe.step(L::test, StepKind::decide).num("e", e).idx("minor_step", up);
+    if (up) {
+      p[b] = Num(p[b] + Num(sb));
+      e = Num(e - Num(2) * A);
+      if constexpr (Probe::on) probe.step(L::minor_step, StepKind::advance).num("e", e).point(p);
+    }
+    p[a] = Num(p[a] + Num(sa));
+    e = Num(e + Num(2) * B);
+    if constexpr (Probe::on) probe.step(L::major_step, StepKind::advance).num("e", e).point(p);
+  }
+  if constexpr (Probe::on) probe.step(L::done, StepKind::done);
+  return true;
+}
+
+}  // namespace sw::raster

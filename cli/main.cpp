@@ -1,0 +1,164 @@
+// The `stepwise` command: list, trace, run, check, bench. Other tools drive these forms, so keep
+// them stable (docs/cli.md). Bad input: one line on stderr, exit 2, no partial output file.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include "catalog.hpp"
+#include "trace_io.hpp"
+
+using namespace sw;
+
+namespace {
+
+std::string read_file(const std::string& path, const char* what) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(std::string("cannot read ") + what + " file '" + path + "'");
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// --input takes JSON text or the name of a file holding it.
+Json read_input(const std::string& arg) {
+  const auto first = arg.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && (arg[first] == '{' || arg[first] == '['))
+    return parse_json_text(arg, "input");
+  return parse_json_text(read_file(arg, "input"), "input file '" + arg + "'");
+}
+
+// Writes through `body` to a file atomically, or to stdout for "" or "-".
+template <class F> void write_output(const std::string& path, F&& body) {
+  if (path.empty() || path == "-") {
+    std::ostringstream buffer;  // stdout gets nothing if body fails half-way
+    body(static_cast<std::ostream&>(buffer));
+    std::cout << buffer.str() << std::flush;
+    return;
+  }
+  AtomicFile file(path);
+  body(file.stream());
+  file.commit();
+}
+
+void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool json) {
+  if (json) {
+    for (const BenchRow& r : rows)
+      std::cout << Json{{"algorithm", alg.id}, {"set", r.set}, {"numeric", numeric_name(r.numeric)}, {"ns_per_op", r.ns_per_op},
+                        {"mismatches", r.mismatches}, {"cases", r.cases}, {"ops", r.ops}, {"fallbacks", r.fallbacks},
+                        {"max_error", r.max_error}}.dump()
+                << '\n';
+    return;
+  }
+  std::printf("%s: ns per output unit (best of repeats), cases differing from exact\n", std::string(alg.id).c_str());
+  std::printf("%-8s %-9s %8s %10s %10s %8s %10s %10s\n", "set", "numeric", "cases", "ops", "ns/op", "x double", "mismatch", "fallback");
+  for (const BenchRow& r : rows) {
+    double base = 0;
+    for (const BenchRow& b : rows)
+      if (b.set == r.set && b.numeric == Numeric::f64) base = b.ns_per_op;
+    std::printf("%-8s %-9s %8zu %10zu %10.2f %8.2f %10zu %10zu\n", r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(),
+                r.cases, r.ops, r.ns_per_op, base > 0 ? r.ns_per_op / base : 0.0, r.mismatches, r.fallbacks);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"stepwise: step through classic graphics algorithms, exactly"};
+  app.require_subcommand(1);
+
+  auto* list = app.add_subcommand("list", "One line per algorithm: its id and what it does");
+
+  std::string alg_id, input_arg, numeric = "double", out_path, inputs_path, trace_path;
+  bool decisions_only = false, json = false;
+  int repeats = 3;
+  std::vector<std::string> bench_numerics;
+
+  auto* trace = app.add_subcommand("trace", "Write a JSONL step trace of one run");
+  trace->add_option("algorithm", alg_id, "Algorithm id (see `stepwise list`)")->required();
+  trace->add_option("--input", input_arg, "Input as JSON text or a file holding it")->required();
+  trace->add_option("--numeric", numeric, "float | double | int | filtered | exact");
+  trace->add_option("--out", out_path, "Output file (default: standard output)");
+
+  auto* run = app.add_subcommand("run", "Run a batch of inputs untraced: one result line per input line");
+  run->add_option("algorithm", alg_id, "Algorithm id")->required();
+  run->add_option("--inputs", inputs_path, "JSONL file, one input per line")->required();
+  run->add_option("--numeric", numeric, "float | double | int | filtered | exact");
+  run->add_option("--out", out_path, "Output file (default: standard output)");
+
+  auto* check = app.add_subcommand("check", "Replay a trace against the exact oracle; exit 0 agree, 1 diverge, 2 malformed");
+  check->add_option("trace", trace_path, "Trace file (JSONL), or - for standard input")->required();
+  check->add_flag("--decisions-only", decisions_only, "Compare lines, kinds, integers and pixels, not rounded numbers");
+
+  auto* bench = app.add_subcommand("bench", "Accuracy against time in every numeric mode, on seeded sets");
+  bench->add_option("algorithm", alg_id, "Algorithm id")->required();
+  bench->add_flag("--json", json, "One JSON object per line per mode and set");
+  bench->add_option("--numeric", bench_numerics, "Only these modes (repeatable)");
+  bench->add_option("--repeats", repeats, "Timed repeats; the best is reported")->check(CLI::Range(1, 100));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "stepwise: error: " << e.what() << '\n';
+    return 2;
+  }
+
+  try {
+    if (*list) {
+      for (const Algorithm& a : catalog()) std::printf("%-26s %s\n", std::string(a.id).c_str(), std::string(a.summary).c_str());
+      return 0;
+    }
+    if (*trace) {
+      const Algorithm& alg = find_algorithm(alg_id);
+      const Numeric n = parse_numeric_for(alg, numeric);
+      const Json input = read_input(input_arg);
+      alg.validate(input, n);
+      write_output(out_path, [&](std::ostream& os) { write_trace(alg, n, input, os); });
+      if (!out_path.empty() && out_path != "-") std::cerr << "stepwise: wrote trace to " << out_path << '\n';
+      return 0;
+    }
+    if (*run) {
+      const Algorithm& alg = find_algorithm(alg_id);
+      const Numeric n = parse_numeric_for(alg, numeric);
+      std::ifstream in(inputs_path);
+      if (!in) throw InputError("cannot read inputs file '" + inputs_path + "'");
+      write_output(out_path, [&](std::ostream& os) { run_batch(alg, n, in, os); });
+      return 0;
+    }
+    if (*check) {
+      CheckReport rep;
+      if (trace_path == "-") {
+        rep = check_trace(std::cin, decisions_only);
+      } else {
+        std::ifstream in(trace_path);
+        if (!in) throw InputError("cannot read trace file '" + trace_path + "'");
+        rep = check_trace(in, decisions_only);
+      }
+      (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << rep.message << '\n';
+      return rep.status;
+    }
+    if (*bench) {
+      const Algorithm& alg = find_algorithm(alg_id);
+      std::vector<Numeric> modes = alg.numerics;
+      if (!bench_numerics.empty()) {
+        modes.clear();
+        for (const auto& m : bench_numerics) modes.push_back(parse_numeric_for(alg, m));
+      }
+      std::vector<BenchRow> rows;
+      for (Numeric m : modes)
+        for (BenchRow& r : alg.bench(m, repeats)) rows.push_back(r);
+      std::stable_sort(rows.begin(), rows.end(), [](const BenchRow& a, const BenchRow& b) { return a.set < b.set; });
+      print_bench(alg, rows, json);
+      return 0;
+    }
+  } catch (const InputError& e) {
+    std::cerr << "stepwise: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "stepwise: error: " << e.what() << '\n';
+    return 2;
+  }
+  return 0;
+}

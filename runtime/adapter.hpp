@@ -1,0 +1,176 @@
+// Builds a catalog entry from a typed algorithm spec, so each family writes only what differs.
+//
+// A Spec provides:
+//   using Algo = <the listing struct>;  static constexpr std::string_view family;
+//   static constexpr std::array<Numeric, N> numerics;
+//   static inline const std::string example;                 // default input, JSON text
+//   struct Input;  struct Output (with ==);
+//   static Input parse(const Json&, Numeric);                // validates, throws InputError
+//   template <class Num> static auto prepare(const Input&);  // inputs converted to Num
+//   template <class Num, class Probe> static Output compute(const Prepared&, Probe&);
+//   static Json to_json(const Output&);
+//   static std::size_t ops(const Output&);                   // output units, for ns per op
+//   static Output oracle(const Input&);                      // independent exact result
+//   static std::vector<BenchSet<Input>> bench_sets();        // seeded
+// Optionally: static double error(const Output& got, const Output& exact), reported as max.
+#pragma once
+#include <chrono>
+#include <type_traits>
+#include "catalog.hpp"
+#include "core/jsonl_probe.hpp"
+
+namespace sw {
+
+template <class Input> struct BenchSet {
+  std::string name;
+  std::vector<Input> inputs;
+};
+
+template <class Spec> constexpr bool spec_has(Numeric n) {
+  for (Numeric m : Spec::numerics)
+    if (m == n) return true;
+  return false;
+}
+
+// Calls f(std::type_identity<Num>{}) for the number type of mode n (Interval for filtered).
+template <class Spec, class F> auto with_number_type(Numeric n, F&& f) {
+  switch (n) {
+    case Numeric::f32: if constexpr (spec_has<Spec>(Numeric::f32)) return f(std::type_identity<float>{}); break;
+    case Numeric::f64: if constexpr (spec_has<Spec>(Numeric::f64)) return f(std::type_identity<double>{}); break;
+    case Numeric::integer: if constexpr (spec_has<Spec>(Numeric::integer)) return f(std::type_identity<std::int64_t>{}); break;
+    case Numeric::filtered: if constexpr (spec_has<Spec>(Numeric::filtered)) return f(std::type_identity<Interval>{}); break;
+    case Numeric::exact: if constexpr (spec_has<Spec>(Numeric::exact)) return f(std::type_identity<Rational>{}); break;
+  }
+  throw InputError(std::string(Spec::Algo::id) + " does not run on '" + std::string(numeric_name(n)) + "'");
+}
+
+// Computes the output for mode n. `visit(type_identity<Num>, compute)` makes a probe, calls
+// compute(probe) and does what it likes with the probe afterwards. Filtered mode decides first on
+// intervals, untraced; if a decision is uncertain it runs on exact rationals instead.
+template <class Spec, class Visit>
+auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool* fell_back) {
+  auto go = [&](auto t) {
+    using Num = typename decltype(t)::type;
+    const auto prepared = Spec::template prepare<Num>(in);
+    return visit(t, [&](auto& probe) { return Spec::template compute<Num>(prepared, probe); });
+  };
+  *fell_back = false;
+  if (n == Numeric::filtered) {
+    if constexpr (spec_has<Spec>(Numeric::filtered)) {
+      try {
+        NoProbe none;
+        (void)Spec::template compute<Interval>(Spec::template prepare<Interval>(in), none);
+      } catch (const Uncertain&) {
+        *fell_back = true;
+        return go(std::type_identity<Rational>{});
+      }
+    }
+  }
+  return with_number_type<Spec>(n, go);
+}
+
+// One untraced run for benchmarks; filtered falls back to exact and counts it.
+template <class Spec, class Num>
+typename Spec::Output bench_one(const auto& prepared, const typename Spec::Input& in, std::size_t& fallbacks) {
+  NoProbe none;
+  if constexpr (std::is_same_v<Num, Interval>) {
+    try {
+      return Spec::template compute<Interval>(prepared, none);
+    } catch (const Uncertain&) {
+      ++fallbacks;
+      return Spec::template compute<Rational>(Spec::template prepare<Rational>(in), none);
+    }
+  } else {
+    return Spec::template compute<Num>(prepared, none);
+  }
+}
+
+template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats) {
+  using Output = typename Spec::Output;
+  std::vector<BenchRow> rows;
+  for (const auto& set : Spec::bench_sets()) {
+    BenchRow row;
+    row.set = set.name;
+    row.numeric = n;
+    row.cases = set.inputs.size();
+    std::vector<Output> exact;
+    for (const auto& in : set.inputs) {
+      NoProbe none;
+      exact.push_back(Spec::template compute<Rational>(Spec::template prepare<Rational>(in), none));
+    }
+    with_number_type<Spec>(n, [&](auto t) {
+      using Num = typename decltype(t)::type;
+      std::vector<decltype(Spec::template prepare<Num>(set.inputs[0]))> prepared;
+      for (const auto& in : set.inputs) prepared.push_back(Spec::template prepare<Num>(in));
+      std::vector<Output> outs(prepared.size());
+      double best = 1e300;
+      for (int r = 0; r < repeats; ++r) {
+        row.fallbacks = 0;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (std::size_t i = 0; i < prepared.size(); ++i) outs[i] = bench_one<Spec, Num>(prepared[i], set.inputs[i], row.fallbacks);
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      }
+      for (std::size_t i = 0; i < outs.size(); ++i) {
+        row.ops += Spec::ops(outs[i]);
+        if (!(outs[i] == exact[i])) ++row.mismatches;
+        if constexpr (requires { Spec::error(outs[i], exact[i]); })
+          row.max_error = std::max(row.max_error, Spec::error(outs[i], exact[i]));
+      }
+      row.ns_per_op = best * 1e9 / static_cast<double>(std::max<std::size_t>(row.ops, 1));
+      return 0;
+    });
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+template <class Spec> Algorithm make_algorithm() {
+  Algorithm a;
+  a.id = Spec::Algo::id;
+  a.family = Spec::family;
+  a.summary = Spec::Algo::summary;
+  a.listing = Spec::Algo::listing();
+  a.numerics.assign(Spec::numerics.begin(), Spec::numerics.end());
+  a.example = Spec::example;
+  auto result = [](const auto& out, Numeric n, bool fell_back) {
+    Json r = Spec::to_json(out);
+    if (n == Numeric::filtered) r["fallback"] = fell_back;
+    return r;
+  };
+  a.validate = [](const Json& j, Numeric n) { (void)Spec::parse(j, n); };
+  a.run = [=](const Json& j, Numeric n) {
+    bool fb;
+    auto out = compute_mode<Spec>(Spec::parse(j, n), n, [](auto, auto&& compute) {
+      NoProbe none;
+      return compute(none);
+    }, &fb);
+    return result(out, n, fb);
+  };
+  a.record = [=](const Json& j, Numeric n) {
+    Recorded rec;
+    bool fb;
+    auto out = compute_mode<Spec>(Spec::parse(j, n), n, [&](auto t, auto&& compute) {
+      auto r = std::make_unique<Recorder<typename decltype(t)::type>>();
+      auto o = compute(*r);
+      rec.trace = std::move(r);
+      return o;
+    }, &fb);
+    rec.result = result(out, n, fb);
+    return rec;
+  };
+  a.stream = [=](const Json& j, Numeric n, std::ostream& os) {
+    bool fb;
+    auto out = compute_mode<Spec>(Spec::parse(j, n), n, [&](auto t, auto&& compute) {
+      JsonlProbe<typename decltype(t)::type> probe(os);
+      auto o = compute(probe);
+      probe.finish();
+      return o;
+    }, &fb);
+    return result(out, n, fb);
+  };
+  a.oracle = [](const Json& j) { return Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact))); };
+  a.bench = [](Numeric n, int repeats) { return bench_spec<Spec>(n, repeats); };
+  return a;
+}
+
+}  // namespace sw

@@ -1,0 +1,37 @@
+#include "catalog.hpp"
+#include <algorithm>
+
+namespace sw {
+
+bool Algorithm::supports(Numeric n) const {
+  return std::find(numerics.begin(), numerics.end(), n) != numerics.end();
+}
+
+const std::vector<Algorithm>& catalog() {
+  static const std::vector<Algorithm> all = [] {
+    std::vector<Algorithm> v;
+    register_lines(v);
+    return v;
+  }();
+  return all;
+}
+
+const Algorithm& find_algorithm(std::string_view id) {
+  for (const Algorithm& a : catalog())
+    if (a.id == id) return a;
+  std::string known;
+  for (const Algorithm& a : catalog()) known += (known.empty() ? "" : ", ") + std::string(a.id);
+  throw InputError("unknown algorithm '" + std::string(id) + "' (known: " + known + ")");
+}
+
+Numeric parse_numeric_for(const Algorithm& alg, std::string_view name) {
+  std::string modes;
+  for (Numeric n : alg.numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
+  auto n = parse_numeric(name);
+  if (!n) throw InputError("unknown numeric mode '" + std::string(name) + "' (known: float, double, int, filtered, exact)");
+  if (!alg.supports(*n))
+    throw InputError(std::string(alg.id) + " does not run on '" + std::string(name) + "' (it runs on: " + modes + ")");
+  return *n;
+}
+
+}  // namespace sw

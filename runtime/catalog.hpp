@@ -1,0 +1,62 @@
+// The algorithm catalog: the type-erased face of every algorithm, shared by the CLI, the
+// visualizer, the tests and the benchmarks. Each family registers its entries (lines.cpp, ...).
+#pragma once
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+#include "core/number.hpp"
+#include "core/probe.hpp"
+#include "core/step.hpp"
+#include "input.hpp"
+
+namespace sw {
+
+// One benchmark measurement: a seeded input set run untraced in one numeric mode.
+struct BenchRow {
+  std::string set;
+  Numeric numeric = Numeric::f64;
+  std::size_t cases = 0, ops = 0;       // ops: output units (pixels, tests), for ns per op
+  double ns_per_op = 0;                 // best of the repeats
+  std::size_t mismatches = 0;           // cases whose output differs from exact
+  std::size_t fallbacks = 0;            // filtered mode: cases that needed the exact re-run
+  double max_error = 0;                 // family-defined (e.g. t error in ulps), 0 if none
+};
+
+// A recorded run: the steps (random access) and the result as written to JSON.
+struct Recorded {
+  std::unique_ptr<TraceView> trace;
+  Json result;
+};
+
+struct Algorithm {
+  std::string_view id, family, summary;
+  Listing listing;
+  std::vector<Numeric> numerics;  // the number types this algorithm runs on
+  std::string example;            // a default input, as JSON text
+  // All of these validate the input first and throw InputError naming the problem.
+  std::function<void(const Json& input, Numeric)> validate;
+  std::function<Recorded(const Json& input, Numeric)> record;
+  // Writes one JSON line per step to `steps`; returns the result.
+  std::function<Json(const Json& input, Numeric, std::ostream& steps)> stream;
+  std::function<Json(const Json& input, Numeric)> run;  // untraced
+  // The independent exact oracle's result for this input (brute force, oracle/).
+  std::function<Json(const Json& input)> oracle;
+  // Times the untraced algorithm on the family's seeded bench sets, against the exact mode.
+  std::function<std::vector<BenchRow>(Numeric, int repeats)> bench;
+
+  bool supports(Numeric n) const;
+};
+
+const std::vector<Algorithm>& catalog();
+// Throws InputError("unknown algorithm ...") listing the known ids.
+const Algorithm& find_algorithm(std::string_view id);
+// Throws InputError for an unknown name or one the algorithm does not run on.
+Numeric parse_numeric_for(const Algorithm& alg, std::string_view name);
+
+// Families register themselves here.
+void register_lines(std::vector<Algorithm>& out);
+
+}  // namespace sw

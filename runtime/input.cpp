@@ -1,0 +1,96 @@
+#include "input.hpp"
+#include <cmath>
+
+namespace sw {
+
+Json parse_json_text(std::string_view text, std::string_view what) {
+  Json j = Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) throw InputError(std::string(what) + ": malformed JSON");
+  return j;
+}
+
+static Rational parse_decimal_or_fraction(const std::string& s, const std::string& what) {
+  auto bad = [&] { return InputError(what + ": '" + s + "' is not a number or an exact \"p/q\""); };
+  if (s.empty() || s.size() > 4096) throw bad();
+  const auto slash = s.find('/');
+  auto digits_ok = [](std::string_view t, bool allow_point) {
+    std::size_t i = (!t.empty() && (t[0] == '-' || t[0] == '+')) ? 1 : 0;
+    bool any = false, point = false;
+    for (; i < t.size(); ++i) {
+      if (t[i] >= '0' && t[i] <= '9') any = true;
+      else if (allow_point && t[i] == '.' && !point) point = true;
+      else return false;
+    }
+    return any;
+  };
+  if (slash != std::string::npos) {
+    std::string p = s.substr(0, slash), q = s.substr(slash + 1);
+    if (!digits_ok(p, false) || !digits_ok(q, false) || q[0] == '-' || q[0] == '+') throw bad();
+    if (p[0] == '+') p = p.substr(1);
+    mpz_class den(q, 10);
+    if (den == 0) throw InputError(what + ": zero denominator in '" + s + "'");
+    Rational r(mpz_class(p, 10), den);
+    r.canonicalize();
+    return r;
+  }
+  if (!digits_ok(s, true)) throw bad();
+  std::string t = s[0] == '+' ? s.substr(1) : s;
+  const auto point = t.find('.');
+  if (point == std::string::npos) return Rational(mpz_class(t, 10));
+  std::string whole = t.substr(0, point) + t.substr(point + 1);
+  if (whole == "-" || whole.empty()) throw bad();
+  mpz_class den;
+  mpz_ui_pow_ui(den.get_mpz_t(), 10, t.size() - point - 1);
+  Rational r(mpz_class(whole, 10), den);
+  r.canonicalize();
+  return r;
+}
+
+Rational parse_rational(const Json& v, const std::string& what) {
+  if (v.is_number_integer()) return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>()), 10)) : Rational(mpz_class(std::to_string(v.get<std::int64_t>()), 10));
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) throw InputError(what + ": not a finite number");
+    return num::to_rational(d);
+  }
+  if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    if (s == "nan" || s == "NaN" || s == "inf" || s == "-inf" || s == "Infinity" || s == "-Infinity")
+      throw InputError(what + ": not a finite number");
+    return parse_decimal_or_fraction(s, what);
+  }
+  throw InputError(what + ": expected a number, got " + std::string(v.type_name()));
+}
+
+const Json& require(const Json& obj, const char* key, const std::string& what) {
+  if (!obj.is_object()) throw InputError(what + ": expected an object");
+  auto it = obj.find(key);
+  if (it == obj.end()) throw InputError(what + ": missing field \"" + key + "\"");
+  return *it;
+}
+
+template <int N> static std::array<Rational, N> parse_array(const Json& obj, const char* key) {
+  const Json& a = require(obj, key, "input");
+  const std::string what = std::string("input.") + key;
+  if (!a.is_array() || a.size() != N)
+    throw InputError(what + ": expected an array of " + std::to_string(N) + " numbers");
+  std::array<Rational, N> r;
+  for (int i = 0; i < N; ++i) r[i] = parse_rational(a[i], what + "[" + std::to_string(i) + "]");
+  return r;
+}
+
+Vec2<Rational> parse_point2(const Json& obj, const char* key) {
+  auto a = parse_array<2>(obj, key);
+  return {a[0], a[1]};
+}
+Vec3<Rational> parse_point3(const Json& obj, const char* key) {
+  auto a = parse_array<3>(obj, key);
+  return {a[0], a[1], a[2]};
+}
+
+void check_bound(const Rational& v, double bound, const std::string& what) {
+  if (abs(v) > Rational(bound))
+    throw InputError(what + ": " + v.get_str() + " is beyond the bound " + num::to_text(bound));
+}
+
+}  // namespace sw

@@ -1,0 +1,37 @@
+// Reading inputs: JSON numbers or exact "p/q" strings, checked for finiteness and bounds. Every
+// failure throws InputError with one line that names the problem.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include "core/number.hpp"
+#include "core/vec.hpp"
+
+namespace sw {
+
+using Json = nlohmann::json;
+
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Parses JSON text; malformed text throws InputError naming `what`.
+Json parse_json_text(std::string_view text, std::string_view what);
+// A number (finite) or a string "n", "p/q" or a decimal like "-1.25"; `what` names it in errors.
+Rational parse_rational(const Json& v, const std::string& what);
+// obj[key] must exist; throws "missing field" otherwise.
+const Json& require(const Json& obj, const char* key, const std::string& what);
+Vec2<Rational> parse_point2(const Json& obj, const char* key);
+Vec3<Rational> parse_point3(const Json& obj, const char* key);
+// Throws unless |v| <= bound.
+void check_bound(const Rational& v, double bound, const std::string& what);
+
+template <class Num> Vec2<Num> to_num(const Vec2<Rational>& p) {
+  return {num::from_rational<Num>(p.x), num::from_rational<Num>(p.y)};
+}
+template <class Num> Vec3<Num> to_num(const Vec3<Rational>& p) {
+  return {num::from_rational<Num>(p.x), num::from_rational<Num>(p.y), num::from_rational<Num>(p.z)};
+}
+
+}  // namespace sw

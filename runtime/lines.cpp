@@ -1,0 +1,126 @@
+// The line family's catalog entries: dda-line, dda-grid-walk, bresenham-line.
+#include <random>
+#include "adapter.hpp"
+#include "lines_oracle.hpp"
+#include "raster/bresenham_line.hpp"
+#include "raster/dda_grid_walk.hpp"
+#include "raster/dda_line.hpp"
+
+namespace sw {
+namespace {
+
+// Coordinates are bounded so that every mode's loop bound fits and traces stay finite.
+constexpr double kCoordBound = 16777216.0;  // 2^24
+
+struct SegmentInput {
+  Vec2<Rational> p0, p1;
+};
+
+SegmentInput parse_segment(const Json& j, Numeric n, bool integer_endpoints) {
+  if (!j.is_object()) throw InputError("input: expected an object {\"p0\":[x,y],\"p1\":[x,y]}");
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (it.key() != "p0" && it.key() != "p1") throw InputError("input: unknown field \"" + it.key() + "\"");
+  SegmentInput in{parse_point2(j, "p0"), parse_point2(j, "p1")};
+  for (const auto* p : {&in.p0, &in.p1})
+    for (int a = 0; a < 2; ++a) {
+      const std::string what = std::string("input.") + (p == &in.p0 ? "p0" : "p1") + "[" + std::to_string(a) + "]";
+      check_bound((*p)[a], kCoordBound, what);
+      if ((integer_endpoints || n == Numeric::integer) && (*p)[a].get_den() != 1)
+        throw InputError(what + ": " + (*p)[a].get_str() + " is not an integer (" +
+                         (integer_endpoints ? "this algorithm takes integer endpoints)" : "int mode takes integer endpoints)"));
+    }
+  return in;
+}
+
+struct PixelsOutput {
+  std::vector<Pixel> pixels;
+  bool finished = true;  // false: the loop bound stopped the walk
+  friend bool operator==(const PixelsOutput&, const PixelsOutput&) = default;
+};
+
+// Seeded bench sets: short random segments with fractional (or integer) endpoints, and long lines.
+std::vector<BenchSet<SegmentInput>> segment_bench_sets(bool integer_endpoints) {
+  std::mt19937_64 rng(20261122);
+  auto coord = [&](double lo, double hi) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    const double v = u(rng);
+    return integer_endpoints ? Rational(static_cast<long>(std::floor(v))) : num::to_rational(std::ldexp(std::floor(std::ldexp(v, 20)), -20));
+  };
+  BenchSet<SegmentInput> random{"random", {}}, long_lines{"long", {}};
+  for (int i = 0; i < 4000; ++i) {
+    Vec2<Rational> p0{coord(-512, 512), coord(-512, 512)};
+    Vec2<Rational> p1{p0.x + coord(-64, 64), p0.y + coord(-64, 64)};
+    random.inputs.push_back({p0, p1});
+  }
+  for (int i = 0; i < 4; ++i) {
+    Vec2<Rational> p0{coord(-2.1e6, -2e6), coord(-2e6, 2e6)};
+    Vec2<Rational> p1{coord(2e6, 2.1e6), coord(-2e6, 2e6)};
+    if (i % 2) std::swap(p0.x, p0.y), std::swap(p1.x, p1.y);
+    long_lines.inputs.push_back({p0, p1});
+  }
+  return {random, long_lines};
+}
+
+template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
+  using Algo = AlgoT;
+  using Input = SegmentInput;
+  using Output = PixelsOutput;
+  static constexpr std::string_view family = "raster";
+  static Input parse(const Json& j, Numeric n) { return parse_segment(j, n, IntegerEndpoints); }
+  template <class Num> static std::array<Vec2<Num>, 2> prepare(const Input& in) { return {to_num<Num>(in.p0), to_num<Num>(in.p1)}; }
+  static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static std::vector<BenchSet<Input>> bench_sets() { return segment_bench_sets(IntegerEndpoints); }
+  static Json pixels_json(const char* key, const Output& o) {
+    Json a = Json::array();
+    for (Pixel p : o.pixels) a.push_back({p.x, p.y});
+    Json r{{key, std::move(a)}};
+    if (!o.finished) r["bound_hit"] = true;
+    return r;
+  }
+};
+
+struct DdaLineSpec : SegmentSpec<raster::DdaLine, false> {
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+  static inline const std::string example = R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})";
+  template <class Num, class Probe> static Output compute(const std::array<Vec2<Num>, 2>& p, Probe& probe) {
+    Output o;
+    o.finished = raster::dda_line<Num>(p[0], p[1], o.pixels, probe);
+    return o;
+  }
+  static Json to_json(const Output& o) { return pixels_json("pixels", o); }
+  static Output oracle(const Input& in) { return {oracle::column_pixels(in.p0, in.p1, oracle::Sampling::ascending)}; }
+};
+
+struct GridWalkSpec : SegmentSpec<raster::DdaGridWalk, false> {
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+  static inline const std::string example = R"({"p0":[1.25,2.5],"p1":[9.5,6.5]})";
+  template <class Num, class Probe> static Output compute(const std::array<Vec2<Num>, 2>& p, Probe& probe) {
+    Output o;
+    o.finished = raster::dda_grid_walk<Num>(p[0], p[1], o.pixels, probe);
+    return o;
+  }
+  static Json to_json(const Output& o) { return pixels_json("cells", o); }
+  static Output oracle(const Input& in) { return {oracle::walk_cells(in.p0, in.p1)}; }
+};
+
+struct BresenhamSpec : SegmentSpec<raster::BresenhamLine, true> {
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::exact};
+  static inline const std::string example = R"({"p0":[1,2],"p1":[13,7]})";
+  template <class Num, class Probe> static Output compute(const std::array<Vec2<Num>, 2>& p, Probe& probe) {
+    Output o;
+    o.finished = raster::bresenham_line<Num>(p[0], p[1], o.pixels, probe);
+    return o;
+  }
+  static Json to_json(const Output& o) { return pixels_json("pixels", o); }
+  static Output oracle(const Input& in) { return {oracle::column_pixels(in.p0, in.p1, oracle::Sampling::directed)}; }
+};
+
+}  // namespace
+
+void register_lines(std::vector<Algorithm>& out) {
+  out.push_back(make_algorithm<DdaLineSpec>());
+  out.push_back(make_algorithm<GridWalkSpec>());
+  out.push_back(make_algorithm<BresenhamSpec>());
+}
+
+}  // namespace sw

@@ -1,0 +1,48 @@
+// Trace files (docs/trace-format.md): writing them atomically, running batches, and `check`.
+#pragma once
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <string>
+#include "catalog.hpp"
+
+namespace sw {
+
+// A file written under a temporary name and renamed into place by commit(). If it is never
+// committed (an error on the way), the temporary is removed: no partial output file.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path target);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  std::ostream& stream() { return out_; }
+  void commit();
+
+ private:
+  std::filesystem::path target_, temp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// The first line of a trace.
+std::string trace_header(const Algorithm& alg, Numeric n, const Json& input);
+
+// Writes the header, one line per step and {"result":...}.
+void write_trace(const Algorithm& alg, Numeric n, const Json& input, std::ostream& out);
+
+// Reads one input per line (blank lines skipped), validates them all, then writes one result per
+// line. Throws InputError("line K: ...") before writing anything if any input is bad.
+std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& inputs, std::ostream& out);
+
+// `stepwise check`: replays a trace against the exact reference run (steps) and the oracle
+// (result). decisions_only compares lines, kinds, integer variables and pixels, not numbers
+// (for float and filtered traces whose numbers are rounded by design).
+struct CheckReport {
+  int status = 0;  // 0 agree, 1 diverge, 2 malformed
+  std::string message;
+  std::size_t steps = 0;
+};
+CheckReport check_trace(std::istream& trace, bool decisions_only);
+
+}  // namespace sw
