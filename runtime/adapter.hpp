@@ -12,7 +12,9 @@
 //   static std::size_t ops(const Output&);                   // output units, for ns per op
 //   static Output oracle(const Input&);                      // independent exact result
 //   static std::vector<BenchSet<Input>> bench_sets();        // seeded
-// Optionally: static double error(const Output& got, const Output& exact), reported as max.
+// Optionally: static double error(const Output& got, const Output& exact), reported as max;
+//             using Filtered = <number type for filtered mode> (default Interval). It must throw
+//             Uncertain when it cannot decide, and have a NumericOf specialization = filtered.
 #pragma once
 #include <chrono>
 #include <type_traits>
@@ -26,19 +28,28 @@ template <class Input> struct BenchSet {
   std::vector<Input> inputs;
 };
 
+template <class Spec> struct FilteredOf {
+  using type = Interval;
+};
+template <class Spec>
+  requires requires { typename Spec::Filtered; }
+struct FilteredOf<Spec> {
+  using type = typename Spec::Filtered;
+};
+
 template <class Spec> constexpr bool spec_has(Numeric n) {
   for (Numeric m : Spec::numerics)
     if (m == n) return true;
   return false;
 }
 
-// Calls f(std::type_identity<Num>{}) for the number type of mode n (Interval for filtered).
+// Calls f(std::type_identity<Num>{}) for the number type of mode n (FilteredOf for filtered).
 template <class Spec, class F> auto with_number_type(Numeric n, F&& f) {
   switch (n) {
     case Numeric::f32: if constexpr (spec_has<Spec>(Numeric::f32)) return f(std::type_identity<float>{}); break;
     case Numeric::f64: if constexpr (spec_has<Spec>(Numeric::f64)) return f(std::type_identity<double>{}); break;
     case Numeric::integer: if constexpr (spec_has<Spec>(Numeric::integer)) return f(std::type_identity<std::int64_t>{}); break;
-    case Numeric::filtered: if constexpr (spec_has<Spec>(Numeric::filtered)) return f(std::type_identity<Interval>{}); break;
+    case Numeric::filtered: if constexpr (spec_has<Spec>(Numeric::filtered)) return f(std::type_identity<typename FilteredOf<Spec>::type>{}); break;
     case Numeric::exact: if constexpr (spec_has<Spec>(Numeric::exact)) return f(std::type_identity<Rational>{}); break;
   }
   throw InputError(std::string(Spec::Algo::id) + " does not run on '" + std::string(numeric_name(n)) + "'");
@@ -59,7 +70,8 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
     if constexpr (spec_has<Spec>(Numeric::filtered)) {
       try {
         NoProbe none;
-        (void)Spec::template compute<Interval>(Spec::template prepare<Interval>(in), none);
+        using F = typename FilteredOf<Spec>::type;
+        (void)Spec::template compute<F>(Spec::template prepare<F>(in), none);
       } catch (const Uncertain&) {
         *fell_back = true;
         return go(std::type_identity<Rational>{});
@@ -73,9 +85,9 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
 template <class Spec, class Num>
 typename Spec::Output bench_one(const auto& prepared, const typename Spec::Input& in, std::size_t& fallbacks) {
   NoProbe none;
-  if constexpr (std::is_same_v<Num, Interval>) {
+  if constexpr (std::is_same_v<Num, typename FilteredOf<Spec>::type>) {
     try {
-      return Spec::template compute<Interval>(prepared, none);
+      return Spec::template compute<Num>(prepared, none);
     } catch (const Uncertain&) {
       ++fallbacks;
       return Spec::template compute<Rational>(Spec::template prepare<Rational>(in), none);
