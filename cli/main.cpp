@@ -7,6 +7,9 @@
 #include <sstream>
 #include "catalog.hpp"
 #include "trace_io.hpp"
+#ifdef SW_HAVE_RENDER
+#include "render_command.hpp"  // visualizer/: `stepwise render`
+#endif
 
 using namespace sw;
 
@@ -73,6 +76,7 @@ int main(int argc, char** argv) {
   bool decisions_only = false, json = false;
   int repeats = 3;
   std::vector<std::string> bench_numerics;
+  std::string bench_set;
 
   auto* trace = app.add_subcommand("trace", "Write a JSONL step trace of one run");
   trace->add_option("algorithm", alg_id, "Algorithm id (see `stepwise list`)")->required();
@@ -94,7 +98,13 @@ int main(int argc, char** argv) {
   bench->add_option("algorithm", alg_id, "Algorithm id")->required();
   bench->add_flag("--json", json, "One JSON object per line per mode and set");
   bench->add_option("--numeric", bench_numerics, "Only these modes (repeatable)");
+  bench->add_option("--set", bench_set, "Only this input set (e.g. random, long)");
   bench->add_option("--repeats", repeats, "Timed repeats; the best is reported")->check(CLI::Range(1, 100));
+
+#ifdef SW_HAVE_RENDER
+  sw::vis::RenderOptions render_opts;
+  auto* render = sw::vis::add_render_command(app, render_opts);
+#endif
 
   try {
     app.parse(argc, argv);
@@ -106,6 +116,9 @@ int main(int argc, char** argv) {
   }
 
   try {
+#ifdef SW_HAVE_RENDER
+    if (*render) return sw::vis::run_render(render_opts);
+#endif
     if (*list) {
       for (const Algorithm& a : catalog()) std::printf("%-26s %s\n", std::string(a.id).c_str(), std::string(a.summary).c_str());
       return 0;
@@ -148,7 +161,8 @@ int main(int argc, char** argv) {
       }
       std::vector<BenchRow> rows;
       for (Numeric m : modes)
-        for (BenchRow& r : alg.bench(m, repeats)) rows.push_back(r);
+        for (BenchRow& r : alg.bench(m, repeats, bench_set)) rows.push_back(r);
+      if (rows.empty()) throw InputError("no bench set named '" + bench_set + "'");
       std::stable_sort(rows.begin(), rows.end(), [](const BenchRow& a, const BenchRow& b) { return a.set < b.set; });
       print_bench(alg, rows, json);
       return 0;

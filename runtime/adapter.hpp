@@ -97,10 +97,11 @@ typename Spec::Output bench_one(const auto& prepared, const typename Spec::Input
   }
 }
 
-template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats) {
+template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, const std::string& only_set) {
   using Output = typename Spec::Output;
   std::vector<BenchRow> rows;
   for (const auto& set : Spec::bench_sets()) {
+    if (!only_set.empty() && set.name != only_set) continue;
     BenchRow row;
     row.set = set.name;
     row.numeric = n;
@@ -181,7 +182,7 @@ template <class Spec> Algorithm make_algorithm() {
     return result(out, n, fb);
   };
   a.oracle = [](const Json& j) { return Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact))); };
-  a.bench = [](Numeric n, int repeats) { return bench_spec<Spec>(n, repeats); };
+  a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };
   return a;
 }
 

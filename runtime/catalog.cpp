@@ -11,6 +11,7 @@ const std::vector<Algorithm>& catalog() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> v;
     register_lines(v);
+    register_rays(v);
     return v;
   }();
   return all;

@@ -44,8 +44,9 @@ struct Algorithm {
   std::function<Json(const Json& input, Numeric)> run;  // untraced
   // The independent exact oracle's result for this input (brute force, oracle/).
   std::function<Json(const Json& input)> oracle;
-  // Times the untraced algorithm on the family's seeded bench sets, against the exact mode.
-  std::function<std::vector<BenchRow>(Numeric, int repeats)> bench;
+  // Times the untraced algorithm on the family's seeded bench sets (or only_set, if not empty),
+  // against the exact mode.
+  std::function<std::vector<BenchRow>(Numeric, int repeats, const std::string& only_set)> bench;
 
   bool supports(Numeric n) const;
 };
@@ -58,5 +59,6 @@ Numeric parse_numeric_for(const Algorithm& alg, std::string_view name);
 
 // Families register themselves here.
 void register_lines(std::vector<Algorithm>& out);
+void register_rays(std::vector<Algorithm>& out);
 
 }  // namespace sw

@@ -4,9 +4,15 @@
 namespace sw {
 
 Json parse_json_text(std::string_view text, std::string_view what) {
-  Json j = Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) throw InputError(std::string(what) + ": malformed JSON");
-  return j;
+  try {
+    return Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& e) {
+    // Keep nlohmann's position and reason, drop its "[json.exception...]" prefix.
+    std::string why = e.what();
+    const auto at = why.find("parse error");
+    why = at == std::string::npos ? why : why.substr(at);
+    throw InputError(std::string(what) + ": malformed JSON (" + why + ")");
+  }
 }
 
 static Rational parse_decimal_or_fraction(const std::string& s, const std::string& what) {

@@ -1,0 +1,52 @@
+// Runs the `stepwise` binary for the CLI tests: exit code, stdout and stderr.
+#pragma once
+#include <sys/wait.h>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace sw::testing {
+
+struct Ran {
+  int status = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// A fresh scratch directory per test run.
+inline std::filesystem::path scratch(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("stepwise-test-" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// Single-quotes an argument for /bin/sh.
+inline std::string sh_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+inline Ran run_stepwise(const std::string& args, const std::string& exe = SW_STEPWISE_EXE) {
+  static int counter = 0;
+  const auto dir = scratch("run-" + std::to_string(counter++));
+  const std::string cmd = sh_quote(exe) + " " + args + " >" + sh_quote((dir / "out").string()) + " 2>" + sh_quote((dir / "err").string()) + " </dev/null";
+  const int raw = std::system(cmd.c_str());
+  Ran r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(dir / "out");
+  r.err = slurp(dir / "err");
+  std::filesystem::remove_all(dir);
+  return r;
+}
+
+}  // namespace sw::testing

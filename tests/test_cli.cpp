@@ -1,0 +1,174 @@
+// The `stepwise` command as other tools drive it: trace, run, check, list, bench forms, and bad
+// input (one line naming the problem, exit 2, no output file).
+#include <catch2/catch.hpp>
+#include "cli_harness.hpp"
+#include "input.hpp"
+
+using namespace sw;
+using sw::testing::run_stepwise;
+using sw::testing::sh_quote;
+
+namespace {
+
+std::vector<Json> json_lines(const std::string& text) {
+  std::vector<Json> out;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+    if (!line.empty()) out.push_back(Json::parse(line));
+  return out;
+}
+
+int count_lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+TEST_CASE("cli: list names every algorithm once", "[cli]") {
+  const auto r = run_stepwise("list");
+  REQUIRE(r.status == 0);
+  for (const char* id : {"dda-line", "dda-grid-walk", "bresenham-line"}) CHECK(r.out.find(std::string(id) + " ") != std::string::npos);
+}
+
+TEST_CASE("cli: trace writes header, steps and result", "[cli]") {
+  const auto dir = sw::testing::scratch("trace");
+  const auto out = (dir / "t.jsonl").string();
+  const auto r = run_stepwise("trace dda-line --input '{\"p0\":[0,0],\"p1\":[4,2]}' --numeric exact --out " + sh_quote(out));
+  REQUIRE(r.status == 0);
+  const auto text = sw::testing::slurp(out);
+  CHECK(text.rfind("{\"format\":\"stepwise-trace\",\"version\":1,\"algorithm\":\"dda-line\",\"numeric\":\"exact\",\"input\":", 0) == 0);
+  const auto lines = json_lines(text);
+  REQUIRE(lines.size() > 3);
+  CHECK(lines.back()["result"]["pixels"] == Json::parse("[[0,0],[1,1],[2,1],[3,2]]"));
+  for (std::size_t i = 1; i + 1 < lines.size(); ++i) {
+    CHECK(lines[i]["step"] == i - 1);
+    CHECK(lines[i].contains("line"));
+    CHECK(lines[i].contains("kind"));
+  }
+  // Exact values are lossless strings: the slope of (0,0)->(4,2) is 1/2.
+  CHECK(text.find("\"dpy\":\"1/2\"") != std::string::npos);
+  // The trace agrees with the oracle.
+  const auto c = run_stepwise("check " + sh_quote(out));
+  CHECK(c.status == 0);
+}
+
+TEST_CASE("cli: check names the first divergent step of a tampered trace", "[cli]") {
+  const auto dir = sw::testing::scratch("tamper");
+  const auto good = (dir / "good.jsonl").string(), bad = (dir / "bad.jsonl").string();
+  REQUIRE(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0.25,0.5],\"p1\":[6.5,3.75]}' --numeric exact --out " + sh_quote(good)).status == 0);
+  auto lines = json_lines(sw::testing::slurp(good));
+  // Move the third visited cell one row up, as a student's off-by-one would.
+  int visits = 0;
+  std::size_t tampered = 0;
+  for (std::size_t i = 1; i + 1 < lines.size(); ++i)
+    if (lines[i]["kind"] == "visit" && ++visits == 3) {
+      lines[i]["geo"][0]["pixel"][1] = lines[i]["geo"][0]["pixel"][1].get<int>() + 1;
+      tampered = lines[i]["step"].get<std::size_t>();
+    }
+  REQUIRE(tampered > 0);
+  std::ofstream(bad) << [&] { std::string s; for (auto& l : lines) s += l.dump() + "\n"; return s; }();
+  const auto c = run_stepwise("check " + sh_quote(bad));
+  CHECK(c.status == 1);
+  CHECK(c.err.find("step " + std::to_string(tampered) + " diverges") != std::string::npos);
+  // A wrong result with correct steps is caught too.
+  lines = json_lines(sw::testing::slurp(good));
+  lines.back()["result"]["cells"].erase(0);
+  std::ofstream(bad, std::ios::trunc) << [&] { std::string s; for (auto& l : lines) s += l.dump() + "\n"; return s; }();
+  const auto c2 = run_stepwise("check " + sh_quote(bad));
+  CHECK(c2.status == 1);
+  CHECK(c2.err.find("result diverges") != std::string::npos);
+}
+
+TEST_CASE("cli: float traces diverge in numbers, agree in decisions on easy input", "[cli]") {
+  const auto dir = sw::testing::scratch("float");
+  const auto t = (dir / "f.jsonl").string();
+  REQUIRE(run_stepwise("trace dda-line --input '{\"p0\":[0,0],\"p1\":[9,3]}' --numeric float --out " + sh_quote(t)).status == 0);
+  CHECK(run_stepwise("check " + sh_quote(t)).status == 1);  // 1/3 is not a float
+  CHECK(run_stepwise("check --decisions-only " + sh_quote(t)).status == 0);
+  // Filtered traces certify their decisions.
+  REQUIRE(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0.5,0.5],\"p1\":[6.5,3.5]}' --numeric filtered --out " + sh_quote(t)).status == 0);
+  CHECK(run_stepwise("check --decisions-only " + sh_quote(t)).status == 0);
+}
+
+TEST_CASE("cli: run answers one line per input, equal to the trace results", "[cli]") {
+  const auto dir = sw::testing::scratch("run");
+  const auto inputs = dir / "in.jsonl";
+  std::ofstream(inputs) << "{\"p0\":[0,0],\"p1\":[5,2]}\n\n{\"p0\":[3,3],\"p1\":[-4,1]}\n{\"p0\":[1,1],\"p1\":[1,1]}\n";
+  const auto r = run_stepwise("run bresenham-line --numeric int --inputs " + sh_quote(inputs.string()));
+  REQUIRE(r.status == 0);
+  const auto results = json_lines(r.out);
+  REQUIRE(results.size() == 3);
+  CHECK(results[0]["pixels"] == Json::parse("[[0,0],[1,0],[2,1],[3,1],[4,2]]"));
+  CHECK(results[2]["pixels"].empty());
+  const auto t = run_stepwise("trace bresenham-line --numeric int --input '{\"p0\":[3,3],\"p1\":[-4,1]}'");
+  REQUIRE(t.status == 0);
+  CHECK(json_lines(t.out).back()["result"] == results[1]);
+}
+
+TEST_CASE("cli: bench --json prints one object per mode and set", "[cli]") {
+  const auto r = run_stepwise("bench bresenham-line --json --numeric int --numeric double --repeats 1 --set random");
+  REQUIRE(r.status == 0);
+  const auto rows = json_lines(r.out);
+  REQUIRE(rows.size() == 2);  // 2 modes x the random set
+  for (const auto& row : rows) {
+    CHECK(row["ns_per_op"].get<double>() > 0);
+    CHECK(row["cases"].get<int>() > 0);
+    CHECK(row.contains("mismatches"));
+    if (row["numeric"] == "int") CHECK(row["mismatches"] == 0);
+  }
+}
+
+TEST_CASE("cli: bad input is one line, exit 2, and no output file", "[cli][errors]") {
+  const auto dir = sw::testing::scratch("bad");
+  const auto out = dir / "never.jsonl";
+  const std::string ok_seg = "'{\"p0\":[0,0],\"p1\":[3,1]}'";
+  struct Case {
+    const char* what;
+    std::string args;
+    const char* says;
+  };
+  const std::vector<Case> cases = {
+      {"malformed JSON", "trace dda-line --input '{\"p0\":[0,0],' ", "malformed JSON"},
+      {"NaN as a string", "trace dda-line --input '{\"p0\":[\"nan\",0],\"p1\":[1,1]}'", "not a finite number"},
+      {"overflow to infinity", "trace dda-line --input '{\"p0\":[1e999,0],\"p1\":[1,1]}'", "overflow"},
+      {"missing field", "trace dda-line --input '{\"p0\":[0,0]}'", "missing field \"p1\""},
+      {"unknown field", "trace dda-line --input '{\"p0\":[0,0],\"p1\":[1,1],\"p2\":[2,2]}'", "unknown field \"p2\""},
+      {"wrong arity", "trace dda-line --input '{\"p0\":[0,0,0],\"p1\":[1,1]}'", "array of 2"},
+      {"not a number", "trace dda-line --input '{\"p0\":[\"abc\",0],\"p1\":[1,1]}'", "not a number"},
+      {"zero denominator", "trace dda-line --input '{\"p0\":[\"1/0\",0],\"p1\":[1,1]}'", "zero denominator"},
+      {"unknown algorithm", "trace dda-lines --input " + ok_seg, "unknown algorithm 'dda-lines'"},
+      {"unknown numeric mode", "trace dda-line --numeric quad --input " + ok_seg, "unknown numeric mode 'quad'"},
+      {"mode the algorithm lacks", "trace dda-line --numeric int --input " + ok_seg, "does not run on 'int'"},
+      {"beyond the bound", "trace dda-line --input '{\"p0\":[0,0],\"p1\":[16777217,1]}'", "beyond the bound"},
+      {"int mode, fractional", "trace bresenham-line --numeric int --input '{\"p0\":[0,0.5],\"p1\":[3,1]}'", "not an integer"},
+      {"bresenham, fractional", "trace bresenham-line --numeric exact --input '{\"p0\":[\"1/3\",0],\"p1\":[3,1]}'", "not an integer"},
+      {"missing input file", "trace dda-line --input /nonexistent/in.json", "cannot read input file"},
+      {"unknown option", "trace dda-line --input " + ok_seg + " --bogus 1", "--bogus"},
+      {"no bench set", "bench dda-line --set nosuch", "no bench set named 'nosuch'"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.what);
+    const bool writes = c.args.rfind("trace", 0) == 0;
+    const auto r = run_stepwise(c.args + (writes ? " --out " + sh_quote(out.string()) : ""));
+    CHECK(r.status == 2);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find(c.says) != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK(!std::filesystem::exists(out));
+    CHECK(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()) == 0);
+  }
+  // run: a bad line anywhere means no output at all, and the line is named.
+  const auto inputs = dir / "in.jsonl";
+  std::ofstream(inputs) << "{\"p0\":[0,0],\"p1\":[5,2]}\n{\"p0\":[0,0],\"p1\":[5]}\n";
+  const auto r = run_stepwise("run dda-line --inputs " + sh_quote(inputs.string()) + " --out " + sh_quote(out.string()));
+  CHECK(r.status == 2);
+  CHECK(r.err.find("line 2") != std::string::npos);
+  CHECK(!std::filesystem::exists(out));
+  // check: malformed or truncated traces are exit 2.
+  std::ofstream(dir / "t.jsonl") << "{\"format\":\"stepwise-trace\",\"version\":1,\"algorithm\":\"dda-line\",\"numeric\":\"exact\",\"input\":{\"p0\":[0,0],\"p1\":[2,1]}}\n{\"step\":0,";
+  CHECK(run_stepwise("check " + sh_quote((dir / "t.jsonl").string())).status == 2);
+  std::ofstream(dir / "t.jsonl", std::ios::trunc) << "{\"format\":\"stepwise-trace\",\"version\":1,\"algorithm\":\"dda-line\",\"numeric\":\"exact\",\"input\":{\"p0\":[0,0],\"p1\":[2,1]}}\n";
+  const auto trunc = run_stepwise("check " + sh_quote((dir / "t.jsonl").string()));
+  CHECK(trunc.status == 2);
+  CHECK(trunc.err.find("no result line") != std::string::npos);
+  CHECK(run_stepwise("check /nonexistent.jsonl").status == 2);
+}
