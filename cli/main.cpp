@@ -31,12 +31,12 @@ Json read_input(const std::string& arg) {
   return parse_json_text(read_file(arg, "input"), "input file '" + arg + "'");
 }
 
-// Writes through `body` to a file atomically, or to stdout for "" or "-".
+// Writes through `body` to a file atomically, or streams to stdout for "" or "-". Callers
+// validate the input first, so nothing fails half-way through the body.
 template <class F> void write_output(const std::string& path, F&& body) {
   if (path.empty() || path == "-") {
-    std::ostringstream buffer;  // stdout gets nothing if body fails half-way
-    body(static_cast<std::ostream&>(buffer));
-    std::cout << buffer.str() << std::flush;
+    body(static_cast<std::ostream&>(std::cout));
+    std::cout.flush();
     return;
   }
   AtomicFile file(path);

@@ -12,7 +12,9 @@
 //   static std::size_t ops(const Output&);                   // output units, for ns per op
 //   static Output oracle(const Input&);                      // independent exact result
 //   static std::vector<BenchSet<Input>> bench_sets();        // seeded
-// Optionally: static double error(const Output& got, const Output& exact), reported as max;
+// Optionally: static void write_members(const Output&, std::ostream&) writes the result object's
+//             members without braces, for large results (else to_json is used);
+//             static double error(const Output& got, const Output& exact), reported as max;
 //             using Filtered = <number type for filtered mode> (default Interval). It must throw
 //             Uncertain when it cannot decide, and have a NumericOf specialization = filtered.
 #pragma once
@@ -179,7 +181,14 @@ template <class Spec> Algorithm make_algorithm() {
       probe.finish();
       return o;
     }, &fb);
-    return result(out, n, fb);
+    if constexpr (requires { Spec::write_members(out, os); }) {
+      os << "{\"result\":{";
+      Spec::write_members(out, os);
+      if (n == Numeric::filtered) os << ",\"fallback\":" << (fb ? "true" : "false");
+      os << "}}\n";
+    } else {
+      os << Json{{"result", result(out, n, fb)}}.dump() << '\n';
+    }
   };
   a.oracle = [](const Json& j) { return Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact))); };
   a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };

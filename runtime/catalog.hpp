@@ -39,8 +39,9 @@ struct Algorithm {
   // All of these validate the input first and throw InputError naming the problem.
   std::function<void(const Json& input, Numeric)> validate;
   std::function<Recorded(const Json& input, Numeric)> record;
-  // Writes one JSON line per step to `steps`; returns the result.
-  std::function<Json(const Json& input, Numeric, std::ostream& steps)> stream;
+  // Writes one JSON line per step, then the line {"result":...}. Memory stays flat in the
+  // number of steps (the result itself is held once, as the algorithm's output).
+  std::function<void(const Json& input, Numeric, std::ostream& out)> stream;
   std::function<Json(const Json& input, Numeric)> run;  // untraced
   // The independent exact oracle's result for this input (brute force, oracle/).
   std::function<Json(const Json& input)> oracle;

@@ -70,6 +70,13 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
   template <class Num> static std::array<Vec2<Num>, 2> prepare(const Input& in) { return {to_num<Num>(in.p0), to_num<Num>(in.p1)}; }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
   static std::vector<BenchSet<Input>> bench_sets() { return segment_bench_sets(IntegerEndpoints); }
+  // Result members written straight to the stream: a long line's result is held once, as pixels.
+  static void pixels_members(const char* key, const Output& o, std::ostream& os) {
+    os << '"' << key << "\":[";
+    for (std::size_t i = 0; i < o.pixels.size(); ++i) os << (i ? ",[" : "[") << o.pixels[i].x << ',' << o.pixels[i].y << ']';
+    os << ']';
+    if (!o.finished) os << ",\"bound_hit\":true";
+  }
   static Json pixels_json(const char* key, const Output& o) {
     Json a = Json::array();
     for (Pixel p : o.pixels) a.push_back({p.x, p.y});
@@ -88,6 +95,7 @@ struct DdaLineSpec : SegmentSpec<raster::DdaLine, false> {
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("pixels", o); }
+  static void write_members(const Output& o, std::ostream& os) { pixels_members("pixels", o, os); }
   static Output oracle(const Input& in) { return {oracle::column_pixels(in.p0, in.p1, oracle::Sampling::ascending)}; }
 };
 
@@ -100,6 +108,7 @@ struct GridWalkSpec : SegmentSpec<raster::DdaGridWalk, false> {
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("cells", o); }
+  static void write_members(const Output& o, std::ostream& os) { pixels_members("cells", o, os); }
   static Output oracle(const Input& in) { return {oracle::walk_cells(in.p0, in.p1)}; }
 };
 
@@ -112,6 +121,7 @@ struct BresenhamSpec : SegmentSpec<raster::BresenhamLine, true> {
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("pixels", o); }
+  static void write_members(const Output& o, std::ostream& os) { pixels_members("pixels", o, os); }
   static Output oracle(const Input& in) { return {oracle::column_pixels(in.p0, in.p1, oracle::Sampling::directed)}; }
 };
 

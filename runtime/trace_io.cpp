@@ -39,8 +39,7 @@ std::string trace_header(const Algorithm& alg, Numeric n, const Json& input) {
 void write_trace(const Algorithm& alg, Numeric n, const Json& input, std::ostream& out) {
   alg.validate(input, n);
   out << trace_header(alg, n, input) << '\n';
-  Json result = alg.stream(input, n, out);
-  out << Json{{"result", result}}.dump() << '\n';
+  alg.stream(input, n, out);
 }
 
 std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::ostream& out) {

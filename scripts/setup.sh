@@ -10,7 +10,7 @@ PACKAGES=(
   libgmp-dev libmpfr-dev libcgal-dev libglm-dev
   catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
   libimgui-dev libstb-dev libglfw3-dev libgl-dev libosmesa6-dev libgif-dev
-  xvfb xauth libembree-dev
+  xvfb xauth libembree-dev fonts-dejavu-core
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -113,6 +113,15 @@ template <class Num> class Recorder final : public TraceView {
   Recorder& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
   Recorder& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
 
+  // Empties the trace but keeps its memory: re-recording (dragging an endpoint) then costs no
+  // allocation or page faults.
+  void clear() {
+    steps_.clear();
+    vars_.clear();
+    geos_.clear();
+    ints_.clear();
+    nums_.clear();
+  }
   void reserve(std::size_t steps) {
     steps_.reserve(steps);
     vars_.reserve(steps * 2);

@@ -43,23 +43,26 @@ bool bresenham_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& 
   if constexpr (Probe::on) probe.step(L::signs, StepKind::init).idx("s_a", sa).idx("s_b", sb).num("A", A).num("B", B);
   Num e = Num(Num(2) * B - A);
   if constexpr (Probe::on) probe.step(L::decision, StepKind::init).num("e", e);
-  Vec2<Num> p = p0;
+  // The walk keeps p's major and minor coordinates apart (pa, pb); p is (pa, pb) or (pb, pa).
+  Num pa = p0[a], pb = p0[b];
+  auto point = [&] { return a == 0 ? Vec2<Num>{pa, pb} : Vec2<Num>{pb, pa}; };
   const std::int64_t count = num::floor_int(A);
-  if constexpr (Probe::on) probe.step(L::loop, StepKind::init).idx("count", count).point(p);
+  if constexpr (Probe::on) probe.step(L::loop, StepKind::init).idx("count", count).point(point());
   for (std::int64_t k = 0; k < count; ++k) {
-    const Pixel px{num::floor_int(p.x), num::floor_int(p.y)};
+    const std::int64_t ia = num::floor_int(pa), ib = num::floor_int(pb);
+    const Pixel px = a == 0 ? Pixel{ia, ib} : Pixel{ib, ia};
     out.push_back(px);
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).num("e", e).pixel(px);
     const bool up = e > Num(0) || (e == Num(0) && sb > 0);
     if constexpr (Probe::on) probe.step(L::test, StepKind::decide).num("e", e).idx("minor_step", up);
     if (up) {
-      p[b] = Num(p[b] + Num(sb));
+      pb = Num(pb + Num(sb));
       e = Num(e - Num(2) * A);
-      if constexpr (Probe::on) probe.step(L::minor_step, StepKind::advance).num("e", e).point(p);
+      if constexpr (Probe::on) probe.step(L::minor_step, StepKind::advance).num("e", e).point(point());
     }
-    p[a] = Num(p[a] + Num(sa));
+    pa = Num(pa + Num(sa));
     e = Num(e + Num(2) * B);
-    if constexpr (Probe::on) probe.step(L::major_step, StepKind::advance).num("e", e).point(p);
+    if constexpr (Probe::on) probe.step(L::major_step, StepKind::advance).num("e", e).point(point());
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done);
   return true;
