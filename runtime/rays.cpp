@@ -2,10 +2,13 @@
 // ray-triangle-{barycentric,mt,watertight}. Semantics: docs/semantics/rays.md.
 #include <cmath>
 #include <memory>
+#include <random>
 #include "adapter.hpp"
 #include "rays_cases.hpp"
 #include "rays_oracle.hpp"
+#include "ray/camera_ray.hpp"
 #include "ray/ray_box.hpp"
+#include "ray/sphere_uv.hpp"
 #include "ray/ray_plane.hpp"
 #include "ray/ray_sphere_geometric.hpp"
 #include "ray/ray_sphere_quadratic.hpp"
@@ -28,6 +31,7 @@ struct RayInput {
   std::array<bool, 3> d_neg_zero{};  // a JSON -0.0 direction component (kept for float modes)
   std::array<Vec3<Rational>, 3> v;   // triangle vertices; sphere: v[0] = c; box: v[0], v[1] = min, max; plane: p, n
   Rational r;                        // sphere radius
+  std::array<std::vector<Rational>, 3> attr;  // triangle: optional per-vertex attributes (same length)
 };
 
 Vec3<Rational> point3(const Json& j, const std::string& what, std::array<bool, 3>* neg_zero = nullptr) {
@@ -55,7 +59,13 @@ void only_keys(const Json& j, std::initializer_list<const char*> keys, const std
 RayInput parse_input(const Json& j, Prim prim) {
   static const char* names[] = {"triangle", "sphere", "box", "plane"};
   const char* key = names[static_cast<int>(prim)];
-  only_keys(j, {"ray", key}, "input");
+  if (prim == Prim::triangle && j.is_object() && j.contains("attr")) {
+    Json rest = j;
+    rest.erase("attr");
+    only_keys(rest, {"ray", key}, "input");
+  } else {
+    only_keys(j, {"ray", key}, "input");
+  }
   RayInput in;
   const Json& ray = j["ray"];
   only_keys(ray, {"o", "d"}, "input.ray");
@@ -68,6 +78,20 @@ RayInput parse_input(const Json& j, Prim prim) {
       if (!g.is_array() || g.size() != 3) throw InputError("input.triangle: expected [[x,y,z],[x,y,z],[x,y,z]]");
       for (int i = 0; i < 3; ++i) in.v[i] = point3(g[i], "input.triangle[" + std::to_string(i) + "]");
       // A degenerate (zero-area) triangle is valid input and a defined miss (docs/semantics/rays.md).
+      if (j.contains("attr")) {
+        // Per-vertex attributes (uv, normals, colours...): three arrays of one length, 1..16.
+        const Json& a = j["attr"];
+        if (!a.is_array() || a.size() != 3) throw InputError("input.attr: expected three arrays, one per vertex");
+        for (int i = 0; i < 3; ++i) {
+          const std::string what = "input.attr[" + std::to_string(i) + "]";
+          if (!a[i].is_array() || a[i].empty() || a[i].size() > 16 || a[i].size() != a[0].size())
+            throw InputError(what + ": expected 1 to 16 numbers, as many as for every vertex");
+          for (std::size_t k = 0; k < a[i].size(); ++k) {
+            in.attr[i].push_back(parse_rational(a[i][k], what + "[" + std::to_string(k) + "]"));
+            check_bound(in.attr[i].back(), kCoordBound, what);
+          }
+        }
+      }
       break;
     }
     case Prim::sphere:
@@ -98,6 +122,7 @@ template <class Num> struct Prepared {
   ray::Ray3<Num> ray;
   std::array<Vec3<Num>, 3> v;
   Num r;
+  std::shared_ptr<const std::array<std::vector<Num>, 3>> attr;  // null unless given (keeps Prepared small)
 };
 
 // Every number is exact data here, except the sphere's irrational t (rounded to 128 bits).
@@ -109,17 +134,20 @@ struct RayOutput {
   int bits = 53;  // significand bits of the mode that produced the doubles (24 for float)
   double t = 0, t_near = 0, t_far = 0;
   std::array<double, 3> b{};
+  std::vector<double> attr;
   std::shared_ptr<const Exact> exact;  // exact mode (and filtered fallbacks, and the oracle)
 
   // Hit or miss, and when both sides are exact, every reported value.
   friend bool operator==(const RayOutput& x, const RayOutput& y) {
     if (x.hit != y.hit) return false;
     if (!x.hit || !x.exact || !y.exact) return true;
-    return x.exact->t == y.exact->t && x.exact->b == y.exact->b && x.exact->t_near == y.exact->t_near && x.exact->t_far == y.exact->t_far;
+    return x.exact->t == y.exact->t && x.exact->b == y.exact->b && x.exact->t_near == y.exact->t_near && x.exact->t_far == y.exact->t_far &&
+           x.exact->attr == y.exact->attr;
   }
 };
 
-template <class Num> RayOutput make_output(bool hit, const Num& t, bool t_exact, const std::array<Num, 3>* b, const Num* tn, const Num* tf) {
+template <class Num>
+RayOutput make_output(bool hit, const Num& t, bool t_exact, const std::array<Num, 3>* b, const Num* tn, const Num* tf, const std::vector<Num>* attr = nullptr) {
   RayOutput o;
   o.hit = hit;
   if constexpr (std::is_same_v<Num, Rational>) {
@@ -130,6 +158,7 @@ template <class Num> RayOutput make_output(bool hit, const Num& t, bool t_exact,
       e->t = t_exact ? t : ray::round_bits(t, oracle::kSphereTBits);
       if (b) e->b = *b;
       if (tn) e->t_near = *tn, e->t_far = *tf;
+      if (attr) e->attr = *attr;
     }
     o.exact = std::move(e);
   } else {
@@ -138,6 +167,8 @@ template <class Num> RayOutput make_output(bool hit, const Num& t, bool t_exact,
       o.t = num::to_double(t);
       if (b) o.b = {num::to_double((*b)[0]), num::to_double((*b)[1]), num::to_double((*b)[2])};
       if (tn) o.t_near = num::to_double(*tn), o.t_far = num::to_double(*tf);
+      if (attr)
+        for (const Num& a : *attr) o.attr.push_back(num::to_double(a));
     }
   }
   return o;
@@ -161,6 +192,12 @@ template <Prim P> Json output_json(const RayOutput& o) {
     Json b = Json::array();
     for (int i = 0; i < 3; ++i) b.push_back(number_json(o.b[i], e ? &e->b[i] : nullptr));
     j["b"] = b;
+    const std::size_t na = e ? e->attr.size() : o.attr.size();
+    if (na > 0) {
+      Json a = Json::array();
+      for (std::size_t k = 0; k < na; ++k) a.push_back(number_json(e ? 0.0 : o.attr[k], e ? &e->attr[k] : nullptr));
+      j["attr"] = a;
+    }
   }
   if constexpr (P == Prim::box) {
     j["t_near"] = number_json(o.t_near, e ? &e->t_near : nullptr);
@@ -194,6 +231,12 @@ template <class AlgoT, Prim P> struct RaySpec {
       for (int k = 0; k < 3; ++k)
         if (in.d_neg_zero[k]) p.ray.d[k] = Num(-0.0);
     for (int i = 0; i < 3; ++i) p.v[i] = to_num<Num>(in.v[i]);
+    if (!in.attr[0].empty()) {
+      auto a = std::make_shared<std::array<std::vector<Num>, 3>>();
+      for (int i = 0; i < 3; ++i)
+        for (const Rational& x : in.attr[i]) (*a)[i].push_back(num::from_rational<Num>(x));
+      p.attr = std::move(a);
+    }
     p.r = num::from_rational<Num>(in.r);
     return p;
   }
@@ -202,7 +245,13 @@ template <class AlgoT, Prim P> struct RaySpec {
   static std::vector<BenchSet<Input>> bench_sets() { return bench_sets_for(P); }
   static Output oracle(const Input& in) {
     switch (P) {
-      case Prim::triangle: return from_oracle(oracle::ray_triangle(in.o, in.d, in.v));
+      case Prim::triangle: {
+        oracle::RayResult res = oracle::ray_triangle(in.o, in.d, in.v);
+        if (res.hit)  // the attributes' definition: sum of b_i a_i
+          for (std::size_t k = 0; k < in.attr[0].size(); ++k)
+            res.attr.push_back(res.b[0] * in.attr[0][k] + res.b[1] * in.attr[1][k] + res.b[2] * in.attr[2][k]);
+        return from_oracle(res);
+      }
       case Prim::sphere: return from_oracle(oracle::ray_sphere(in.o, in.d, in.v[0], in.r));
       case Prim::box: return from_oracle(oracle::ray_box(in.o, in.d, in.v[0], in.v[1]));
       case Prim::plane: return from_oracle(oracle::ray_plane(in.o, in.d, in.v[0], in.v[1]));
@@ -224,7 +273,12 @@ template <class AlgoT, auto Fn> struct TriangleSpec : RaySpec<AlgoT, Prim::trian
       R"({"ray":{"o":[0,0,10],"d":[0.30458447,0.30458447,-0.9024725]},"triangle":[[-5,-5,0],[5,-5,0],[5,5,0]]})";
   template <class Num, class Probe> static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
     const auto h = Fn(p, probe);
-    return make_output<Num>(h.hit, h.t, true, &h.b, nullptr, nullptr);
+    if (!h.hit || !p.attr) return make_output<Num>(h.hit, h.t, true, &h.b, nullptr, nullptr);
+    // Inverse mapping: the vertex attributes interpolated with the barycentric weights.
+    const auto& a = *p.attr;
+    std::vector<Num> attr;
+    for (std::size_t k = 0; k < a[0].size(); ++k) attr.push_back(Num(h.b[0] * a[0][k] + h.b[1] * a[1][k] + h.b[2] * a[2][k]));
+    return make_output<Num>(h.hit, h.t, true, &h.b, nullptr, nullptr, &attr);
   }
 };
 template <class AlgoT, auto Fn> struct SphereSpec : RaySpec<AlgoT, Prim::sphere> {
@@ -257,6 +311,203 @@ constexpr auto sph_geo = []<class Num, class Probe>(const Prepared<Num>& p, Prob
 constexpr auto sph_quad = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_sphere_quadratic<Num>(p.ray, p.v[0], p.r, probe); };
 constexpr auto sph_stable = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_sphere_stable<Num>(p.ray, p.v[0], p.r, probe); };
 
+
+// ---- camera-ray and sphere-uv: float and double only (their values are transcendental). The
+// Rational instantiation evaluates sqrt and trig in 300-bit MPFR; it is the bench's and check's
+// reference (`oracle`), not an exact mode, and the catalog does not offer exact for them.
+
+struct CameraInput {
+  Vec3<Rational> eye, vpn, vup;
+  Rational dist, fov_deg;
+  std::int64_t w = 1, h = 1, i = 0, j = 0;
+  ray::Projection projection = ray::Projection::perspective;
+};
+
+std::int64_t parse_index(const Json& v, const std::string& what, std::int64_t lo, std::int64_t hi) {
+  if (!v.is_number_integer()) throw InputError(what + ": expected an integer");
+  const std::int64_t x = v.get<std::int64_t>();
+  if (x < lo || x > hi) throw InputError(what + ": " + std::to_string(x) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return x;
+}
+
+CameraInput parse_camera(const Json& j) {
+  only_keys(j, {"camera", "pixel", "size", "projection"}, "input");
+  CameraInput in;
+  const Json& c = j["camera"];
+  only_keys(c, {"eye", "vpn", "vup", "d", "fov"}, "input.camera");
+  in.eye = point3(c["eye"], "input.camera.eye");
+  in.vpn = point3(c["vpn"], "input.camera.vpn");
+  in.vup = point3(c["vup"], "input.camera.vup");
+  in.dist = parse_rational(c["d"], "input.camera.d");
+  in.fov_deg = parse_rational(c["fov"], "input.camera.fov");
+  const Vec3<Rational> side = cross(in.vup, in.vpn);
+  if (sgn(in.vpn.x) == 0 && sgn(in.vpn.y) == 0 && sgn(in.vpn.z) == 0) throw InputError("input.camera.vpn: the view-plane normal is zero");
+  if (sgn(side.x) == 0 && sgn(side.y) == 0 && sgn(side.z) == 0) throw InputError("input.camera.vup: parallel to vpn (or zero)");
+  if (sgn(in.dist) <= 0 || in.dist > Rational(kCoordBound)) throw InputError("input.camera.d: must be in (0, 1e15]");
+  const Json& proj = j["projection"];
+  if (!proj.is_string()) throw InputError("input.projection: expected \"perspective\", \"fisheye\" or \"cylindrical\"");
+  const std::string ps = proj.get<std::string>();
+  if (ps == "perspective") in.projection = ray::Projection::perspective;
+  else if (ps == "fisheye") in.projection = ray::Projection::fisheye;
+  else if (ps == "cylindrical") in.projection = ray::Projection::cylindrical;
+  else throw InputError("input.projection: unknown projection '" + ps + "' (perspective, fisheye, cylindrical)");
+  const Rational max_fov = in.projection == ray::Projection::fisheye ? 360 : 179;
+  if (sgn(in.fov_deg) <= 0 || in.fov_deg > max_fov) throw InputError("input.camera.fov: degrees in (0, " + max_fov.get_str() + "] for " + ps);
+  const Json& size = j["size"];
+  const Json& px = j["pixel"];
+  if (!size.is_array() || size.size() != 2) throw InputError("input.size: expected [W, H]");
+  if (!px.is_array() || px.size() != 2) throw InputError("input.pixel: expected [i, j]");
+  in.w = parse_index(size[0], "input.size[0]", 1, 1 << 20);
+  in.h = parse_index(size[1], "input.size[1]", 1, 1 << 20);
+  in.i = parse_index(px[0], "input.pixel[0]", 0, in.w - 1);
+  in.j = parse_index(px[1], "input.pixel[1]", 0, in.h - 1);
+  return in;
+}
+
+// Values as doubles (the mode's values widened), plus the 300-bit reference's rationals.
+struct ValuesOutput {
+  bool valid = true;
+  int bits = 53;
+  std::vector<double> x;
+  std::shared_ptr<const std::vector<Rational>> ref;
+  friend bool operator==(const ValuesOutput& a, const ValuesOutput& b) { return a.valid == b.valid; }
+};
+template <class Num> ValuesOutput values_output(bool valid, std::initializer_list<Num> xs) {
+  ValuesOutput o;
+  o.valid = valid;
+  if constexpr (std::is_same_v<Num, float>) o.bits = 24;
+  if constexpr (std::is_same_v<Num, Rational>) {
+    auto r = std::make_shared<std::vector<Rational>>();
+    for (const Num& v : xs) r->push_back(ray::round_bits(v, 200)), o.x.push_back(v.get_d());
+    o.ref = std::move(r);
+  } else {
+    for (const Num& v : xs) o.x.push_back(num::to_double(v));
+  }
+  return o;
+}
+// The largest error over the values, in ulps of the mode at the largest reference value.
+double values_error(const ValuesOutput& got, const ValuesOutput& ref) {
+  if (!got.valid || !ref.valid || !ref.ref) return 0;
+  double scale = 0, worst = 0;
+  for (const Rational& r : *ref.ref) scale = std::max(scale, std::fabs(r.get_d()));
+  if (scale == 0) return 0;
+  for (std::size_t k = 0; k < got.x.size(); ++k)
+    worst = std::max(worst, std::fabs(Rational(num::to_rational(got.x[k]) - (*ref.ref)[k]).get_d()));
+  return std::ldexp(worst, got.bits - 1 - std::ilogb(scale));
+}
+
+struct CameraSpec {
+  using Algo = ray::CameraRayAlgo;
+  using Input = CameraInput;
+  using Output = ValuesOutput;
+  static constexpr std::string_view family = "ray";
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64};
+  static inline const std::string example =
+      R"({"camera":{"eye":[0,1,5],"vpn":[0,0,1],"vup":[0,1,0],"d":1,"fov":60},"pixel":[3,2],"size":[8,6],"projection":"perspective"})";
+  static Input parse(const Json& j, Numeric) { return parse_camera(j); }
+  template <class Num> struct Prepared {
+    ray::Camera<Num> cam;
+    std::int64_t i, j;
+  };
+  template <class Num> static Prepared<Num> prepare(const Input& in) {
+    ray::Camera<Num> c{to_num<Num>(in.eye), to_num<Num>(in.vpn), to_num<Num>(in.vup), num::from_rational<Num>(in.dist), Num(0), in.w, in.h, in.projection};
+    if constexpr (std::is_same_v<Num, Rational>) c.fov = in.fov_deg * ray::pi_num<Rational>() / 180;
+    else c.fov = Num(num::from_rational<Num>(in.fov_deg) * Num(3.14159265358979323846 / 180));
+    return {c, in.i, in.j};
+  }
+  template <class Num, class Probe> static Output compute(const Prepared<Num>& p, Probe& probe) {
+    const auto r = ray::camera_ray<Num>(p.cam, p.i, p.j, probe);
+    const auto& o = r.ray.o;
+    const auto& d = r.ray.d;
+    return values_output<Num>(r.valid, {o.x, o.y, o.z, d.x, d.y, d.z});
+  }
+  static Json to_json(const Output& o) {
+    if (!o.valid) return Json{{"valid", false}};
+    return Json{{"valid", true}, {"o", {o.x[0], o.x[1], o.x[2]}}, {"d", {o.x[3], o.x[4], o.x[5]}}};
+  }
+  static std::size_t ops(const Output&) { return 1; }
+  static Output oracle(const Input& in) {
+    NoProbe none;
+    return compute<Rational>(prepare<Rational>(in), none);
+  }
+  static double error(const Output& got, const Output& ref) { return values_error(got, ref); }
+  static std::vector<BenchSet<Input>> bench_sets();
+};
+
+struct SphereUVInput {
+  Vec3<Rational> c, p;
+  Rational r;
+};
+struct SphereUVSpec {
+  using Algo = ray::SphereUVAlgo;
+  using Input = SphereUVInput;
+  using Output = ValuesOutput;
+  static constexpr std::string_view family = "ray";
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64};
+  static inline const std::string example = R"({"sphere":{"c":[0,0,0],"r":1},"point":[-0.6,0,0.8]})";
+  static Input parse(const Json& j, Numeric) {
+    only_keys(j, {"sphere", "point"}, "input");
+    only_keys(j["sphere"], {"c", "r"}, "input.sphere");
+    Input in{point3(j["sphere"]["c"], "input.sphere.c"), point3(j["point"], "input.point"), parse_rational(j["sphere"]["r"], "input.sphere.r")};
+    if (sgn(in.r) <= 0) throw InputError("input.sphere.r: the radius must be > 0, got " + in.r.get_str());
+    if (in.p == in.c) throw InputError("input.point: equals the centre (no direction to map)");
+    return in;
+  }
+  template <class Num> static std::array<Vec3<Num>, 2> prepare(const Input& in) { return {to_num<Num>(in.c), to_num<Num>(in.p)}; }
+  template <class Num, class Probe> static Output compute(const std::array<Vec3<Num>, 2>& x, Probe& probe) {
+    const auto m = ray::sphere_uv<Num>(x[0], x[1], probe);
+    return values_output<Num>(true, {m.normal.x, m.normal.y, m.normal.z, m.lat, m.lon, m.u, m.v});
+  }
+  static Json to_json(const Output& o) {
+    return Json{{"normal", {o.x[0], o.x[1], o.x[2]}}, {"lat", o.x[3]}, {"lon", o.x[4]}, {"u", o.x[5]}, {"v", o.x[6]}};
+  }
+  static std::size_t ops(const Output&) { return 1; }
+  static Output oracle(const Input& in) {
+    NoProbe none;
+    return compute<Rational>(prepare<Rational>(in), none);
+  }
+  static double error(const Output& got, const Output& ref) { return values_error(got, ref); }
+  static std::vector<BenchSet<Input>> bench_sets() {
+    std::mt19937_64 rng(77);
+    auto u = [&](double lo, double hi) { return num::to_rational(double(float(std::uniform_real_distribution<double>(lo, hi)(rng)))); };
+    BenchSet<Input> random{"random", {}}, hard{"hard", {}};
+    for (int k = 0; k < 5000; ++k) random.inputs.push_back({{u(-5, 5), u(-5, 5), u(-5, 5)}, {u(-9, 9), u(-9, 9), u(-9, 9)}, 1});
+    // The seam (y = 0, x < 0), the poles, and points very close to them.
+    for (int k = 0; k < 1000; ++k) {
+      const Rational x = u(-2, -0.1), z = u(-1, 1), tiny = k % 3 == 0 ? Rational(0) : u(-1e-6, 1e-6);
+      hard.inputs.push_back({{0, 0, 0}, {x, tiny, z}, 1});
+      hard.inputs.push_back({{0, 0, 0}, {tiny, Rational(tiny * 3), z + (sgn(z) >= 0 ? 1 : -1)}, 1});
+    }
+    return {random, hard};
+  }
+};
+
+std::vector<BenchSet<CameraInput>> CameraSpec::bench_sets() {
+  // Random cameras and pixels for each projection; the hard set: the image corners and edges,
+  // wide angles (fisheye up to 360 degrees, at the circle's rim), and far eyes.
+  std::mt19937_64 rng(91);
+  auto u = [&](double lo, double hi) { return num::to_rational(double(float(std::uniform_real_distribution<double>(lo, hi)(rng)))); };
+  auto camera = [&](ray::Projection p, bool hard) {
+    CameraInput c;
+    const double far = hard ? 1e7 : 10;
+    c.eye = {u(-far, far), u(-far, far), u(-far, far)};
+    c.vpn = {u(-1, 1), u(-1, 1), u(-1, 1)};
+    c.vup = {u(-1, 1), u(-1, 1), u(-1, 1)};
+    c.dist = u(0.5, 3);
+    c.projection = p;
+    c.fov_deg = p == ray::Projection::fisheye ? (hard ? Rational(360) : u(60, 200)) : (hard ? Rational(170) : u(20, 120));
+    c.w = 640, c.h = 480;
+    const bool edge = hard && rng() % 2;
+    c.i = edge ? std::int64_t(rng() % 2) * 639 : std::int64_t(rng() % 640);
+    c.j = edge ? std::int64_t(rng() % 2) * 479 : std::int64_t(rng() % 480);
+    if (hard && p == ray::Projection::fisheye) c.j = 239 + std::int64_t(rng() % 2), c.i = std::int64_t(rng() % 2) ? 80 : 559;  // near the rim
+    return c;
+  };
+  BenchSet<CameraInput> random{"random", {}}, hard{"hard", {}};
+  for (auto p : {ray::Projection::perspective, ray::Projection::fisheye, ray::Projection::cylindrical})
+    for (int k = 0; k < 1500; ++k) random.inputs.push_back(camera(p, false)), hard.inputs.push_back(camera(p, true));
+  return {random, hard};
+}
 }  // namespace
 
 void register_rays(std::vector<Algorithm>& out) {
@@ -268,6 +519,8 @@ void register_rays(std::vector<Algorithm>& out) {
   out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleBarycentric, tri_bary>>());
   out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleMT, tri_mt>>());
   out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleWatertight, tri_wt>>());
+  out.push_back(make_algorithm<CameraSpec>());
+  out.push_back(make_algorithm<SphereUVSpec>());
 }
 
 }  // namespace sw

@@ -1,0 +1,86 @@
+// Camera rays. The view-plane model: an orthonormal frame (u, v, n) from the view-plane normal
+// VPN and the up vector VUP, the pixel (i, j) mapped to a point P1 on a window of the view plane
+// at distance d in front of the eye P0, and the ray P0 -> P1. Perspective takes the window from
+// a vertical field of view; fisheye (equidistant) and cylindrical map the pixel to angles instead.
+// Pixel convention (docs/semantics/rays.md): pixel (i, j) is the unit square centred on (i, j), as
+// in the raster family; the image spans [-1/2, W - 1/2] x [-1/2, H - 1/2], row 0 at the top.
+#pragma once
+#include <array>
+#include <string_view>
+#include "core/probe.hpp"
+#include "ray/ray_common.hpp"
+
+namespace sw::ray {
+
+enum class Projection { perspective, fisheye, cylindrical };
+
+template <class Num> struct Camera {
+  Vec3<Num> eye, vpn, vup;  // vpn points from the scene to the eye: the camera looks along -n
+  Num dist;                 // d > 0: distance of the view plane
+  Num fov;                  // vertical field of view, radians (fisheye: of the image circle's diameter)
+  std::int64_t width = 1, height = 1;
+  Projection projection = Projection::perspective;
+};
+
+template <class Num> struct CameraRay {
+  bool valid = false;  // fisheye: false outside the image circle
+  Ray3<Num> ray;
+};
+
+struct CameraRayAlgo {
+  static constexpr std::string_view id = "camera-ray";
+  static constexpr std::string_view summary = "Camera ray: view-plane model (perspective), fisheye, cylindrical";
+  enum Line : std::uint32_t { frame = 1, screen, window, point, fisheye, circle, cyl, ray };
+  static constexpr std::array<std::string_view, 8> lines = {
+      "n <- VPN/|VPN|; u <- (VUP x n)/|VUP x n|; v <- n x u",
+      "sx <- 2 (i + 1/2)/W - 1; sy <- 1 - 2 (j + 1/2)/H     -- the pixel centre in [-1, 1]",
+      "perspective: hh <- d tan(fov/2); hw <- hh W/H       -- the window's half sizes",
+      "P1 <- P0 - d n + sx hw u + sy hh v; dir <- P1 - P0",
+      "fisheye: x <- sx W/H; rho <- sqrt(x^2 + sy^2); theta <- rho fov/2; phi <- atan2(sy, x)",
+      "if rho > 1: no ray (outside the image circle); dir <- sin(theta)(cos(phi) u + sin(phi) v) - cos(theta) n",
+      "cylindrical: phi <- sx (fov/2) W/H; dir <- d (sin(phi) u - cos(phi) n) + sy d tan(fov/2) v",
+      "ray <- (P0, dir)",
+  };
+  static constexpr Listing listing() { return {"Camera rays", lines}; }
+};
+
+template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {
+  using L = CameraRayAlgo;
+  CameraRay<Num> out;
+  auto unit = [](const Vec3<Num>& a) { return Num(Num(1) / sqrt_any(dot(a, a))) * a; };
+  const Vec3<Num> n = unit(c.vpn), u = unit(cross(c.vup, n)), v = cross(n, u);
+  if constexpr (Probe::on)
+    probe.step(L::frame, StepKind::init).num("ux", u.x).num("uy", u.y).num("uz", u.z).num("vx", v.x).num("vy", v.y).num("vz", v.z)
+        .num("nx", n.x).num("ny", n.y).num("nz", n.z);
+  const Num w = Num(double(c.width)), h = Num(double(c.height)), half(0.5);
+  const Num sx = Num(Num(2) * Num(Num(double(i)) + half) / w - Num(1)), sy = Num(Num(1) - Num(2) * Num(Num(double(j)) + half) / h);
+  if constexpr (Probe::on) probe.step(L::screen, StepKind::init).idx("i", i).idx("j", j).num("sx", sx).num("sy", sy);
+  Vec3<Num> dir;
+  if (c.projection == Projection::perspective) {
+    const Num hh = Num(c.dist * tan_num(Num(c.fov * half))), hw = Num(hh * w / h);
+    if constexpr (Probe::on) probe.step(L::window, StepKind::init).num("hh", hh).num("hw", hw);
+    const Vec3<Num> p1 = c.eye - c.dist * n + Num(sx * hw) * u + Num(sy * hh) * v;
+    dir = p1 - c.eye;
+    if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p1);
+  } else if (c.projection == Projection::fisheye) {
+    const Num x = Num(sx * w / h), rho = sqrt_any(Num(x * x + sy * sy));
+    const Num theta = Num(rho * c.fov * half), phi = atan2_num(sy, x);
+    if constexpr (Probe::on) probe.step(L::fisheye, StepKind::decide).num("rho", rho).num("theta", theta).num("phi", phi);
+    if (rho > Num(1)) {
+      if constexpr (Probe::on) probe.step(L::circle, StepKind::miss);
+      return out;
+    }
+    const Num st = sin_num(theta);
+    dir = Num(st * cos_num(phi)) * u + Num(st * sin_num(phi)) * v - cos_num(theta) * n;
+  } else {
+    const Num phi = Num(sx * c.fov * half * w / h);
+    if constexpr (Probe::on) probe.step(L::cyl, StepKind::decide).num("phi", phi);
+    dir = c.dist * (sin_num(phi) * u - cos_num(phi) * n) + Num(sy * c.dist * tan_num(Num(c.fov * half))) * v;
+  }
+  out.valid = true;
+  out.ray = {c.eye, dir};
+  if constexpr (Probe::on) probe.step(L::ray, StepKind::done).num("dx", dir.x).num("dy", dir.y).num("dz", dir.z).geo(GeoKind::ray3, c.eye.x, c.eye.y, c.eye.z, dir.x, dir.y, dir.z);
+  return out;
+}
+
+}  // namespace sw::ray

@@ -1,0 +1,79 @@
+// The slab test (Kay-Kajiya): the ray's t-interval inside each axis slab, intersected. A zero
+// direction component (+0.0 or -0.0) is tested explicitly: the ray then holds every t of that slab
+// or none, decided by the origin's coordinate. So no 1/0 = inf and no 0 * inf = NaN can arise, an
+// origin exactly on a slab plane counts as inside it, and exact rationals run the same code.
+#pragma once
+#include <array>
+#include <string_view>
+#include "core/probe.hpp"
+#include "ray/ray_common.hpp"
+
+namespace sw::ray {
+
+template <class Num> struct BoxHit {
+  bool hit = false;
+  Num t{}, t_near{}, t_far{};  // t: the first surface point with t > 0
+};
+
+struct RayBox {
+  static constexpr std::string_view id = "ray-box";
+  static constexpr std::string_view summary = "Ray-box slab test, exact for zero and -0 direction components";
+  enum Line : std::uint32_t { init = 1, axis, flat, outside, slab, order, clip, empty, exit, hit };
+  static constexpr std::array<std::string_view, 10> lines = {
+      "t_near <- -inf; t_far <- +inf",
+      "for each axis k:",
+      "    if d_k = 0:                                -- parallel to the slab (+0 or -0)",
+      "        if o_k < min_k or o_k > max_k: miss; else next axis",
+      "    t1 <- (min_k - o_k) / d_k; t2 <- (max_k - o_k) / d_k",
+      "    if t1 > t2: swap t1, t2",
+      "    t_near <- max(t_near, t1); t_far <- min(t_far, t2)",
+      "if t_near > t_far: miss                        -- the slab intervals do not overlap",
+      "if t_far <= 0: miss                            -- the box is behind",
+      "hit: t <- t_near if t_near > 0, else t_far     -- origin inside: the exit point",
+  };
+  static constexpr Listing listing() { return {"Slab test", lines}; }
+};
+
+template <class Num, class Probe = NoProbe>
+BoxHit<Num> ray_box(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) {
+  using L = RayBox;
+  BoxHit<Num> out;
+  if constexpr (Probe::on)
+    probe.step(L::init, StepKind::init).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
+        .geo(GeoKind::box3, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+  bool bounded = false;  // false while t_near and t_far are still -inf and +inf
+  Num tn{}, tf{};
+  for (int k = 0; k < 3; ++k) {
+    if (r.d[k] == Num(0)) {
+      const bool out_of_slab = r.o[k] < lo[k] || r.o[k] > hi[k];
+      if constexpr (Probe::on) probe.step(L::flat, StepKind::decide).idx("k", k).idx("out", out_of_slab);
+      if (out_of_slab) {
+        if constexpr (Probe::on) probe.step(L::outside, StepKind::miss);
+        return out;
+      }
+      continue;
+    }
+    Num t1 = Num(Num(lo[k] - r.o[k]) / r.d[k]), t2 = Num(Num(hi[k] - r.o[k]) / r.d[k]);
+    if (t1 > t2) std::swap(t1, t2);
+    if (!bounded || t1 > tn) tn = t1;
+    if (!bounded || t2 < tf) tf = t2;
+    bounded = true;
+    if constexpr (Probe::on) probe.step(L::clip, StepKind::advance).idx("k", k).num("t1", t1).num("t2", t2).num("t_near", tn).num("t_far", tf);
+  }
+  // d != 0, so some axis bounded the interval.
+  out.t_near = tn, out.t_far = tf;
+  if (tn > tf) {
+    if constexpr (Probe::on) probe.step(L::empty, StepKind::miss);
+    return out;
+  }
+  if (!(tf > Num(0))) {
+    if constexpr (Probe::on) probe.step(L::exit, StepKind::miss);
+    return out;
+  }
+  out.hit = true;
+  out.t = tn > Num(0) ? tn : tf;
+  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
+  return out;
+}
+
+}  // namespace sw::ray

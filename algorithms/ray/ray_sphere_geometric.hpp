@@ -1,0 +1,70 @@
+// The implementor's-guide geometric ray-sphere test: compare the origin with the sphere (inside /
+// outside), project the centre onto the ray (closest approach), reject by the squared distance of
+// the line from the centre, then step back by the half chord. The direction is not normalised,
+// so tca and the half chord carry a factor |d| that the final division by a = d.d removes.
+#pragma once
+#include <array>
+#include <string_view>
+#include "core/probe.hpp"
+#include "ray/ray_common.hpp"
+
+namespace sw::ray {
+
+template <class Num> struct SphereHit {
+  bool hit = false;
+  Num t{};
+  bool t_exact = true;  // false when t went through a rounded square root
+};
+
+struct RaySphereGeometric {
+  static constexpr std::string_view id = "ray-sphere-geometric";
+  static constexpr std::string_view summary = "Ray-sphere, implementor's guide: closest approach, inside/outside, half chord";
+  enum Line : std::uint32_t { oc = 1, inside, tca, behind, dist, reject, chord, root, hit };
+  static constexpr std::array<std::string_view, 9> lines = {
+      "L <- c - o; L2 <- L . L; a <- d . d",
+      "inside <- L2 < r^2; on <- L2 = r^2",
+      "tca <- L . d                                -- |d| times the closest-approach distance",
+      "if not inside and tca <= 0: miss            -- the sphere is behind (or only touches the origin)",
+      "m2 <- L2 - tca^2 / a                        -- squared distance from c to the line",
+      "if m2 > r^2: miss",
+      "h2 <- a (r^2 - m2)                          -- |d|^2 times the squared half chord",
+      "t <- (tca - sqrt(h2)) / a if outside, else (tca + sqrt(h2)) / a",
+      "hit at o + t d",
+  };
+  static constexpr Listing listing() { return {"Geometric ray-sphere", lines}; }
+};
+
+template <class Num, class Probe = NoProbe>
+SphereHit<Num> ray_sphere_geometric(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+  using L = RaySphereGeometric;
+  SphereHit<Num> out;
+  const Vec3<Num> l = c - r.o;
+  const Num l2 = dot(l, l), a = dot(r.d, r.d), r2 = Num(radius * radius);
+  if constexpr (Probe::on)
+    probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2)
+        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z).geo(GeoKind::sphere, c.x, c.y, c.z, radius);
+  const bool inside = l2 < r2, outside = l2 > r2;
+  if constexpr (Probe::on) probe.step(L::inside, StepKind::decide).idx("inside", inside).idx("on", !inside && !outside);
+  const Num tca = dot(l, r.d);
+  if constexpr (Probe::on) probe.step(L::tca, StepKind::decide).num("tca", tca);
+  if (!inside && !(tca > Num(0))) {
+    if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
+    return out;
+  }
+  const Num m2 = Num(l2 - Num(tca * tca) / a);
+  if constexpr (Probe::on) probe.step(L::dist, StepKind::decide).num("m2", m2);
+  if (m2 > r2) {
+    if constexpr (Probe::on) probe.step(L::reject, StepKind::miss);
+    return out;
+  }
+  const Num h2 = Num(a * Num(r2 - m2));
+  if constexpr (Probe::on) probe.step(L::chord, StepKind::decide).num("h2", h2);
+  // Near root when the origin is outside; the far root when inside or on the sphere (there the
+  // near root is <= 0).
+  out.t = Num(add_root(tca, outside ? -1 : 1, h2, out.t_exact) / a);
+  out.hit = true;
+  if constexpr (Probe::on) probe.step(L::root, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
+  return out;
+}
+
+}  // namespace sw::ray

@@ -1,0 +1,55 @@
+// The textbook quadratic: |o + t d - c|^2 = r^2 as a t^2 + b t + c = 0, both roots by the
+// quadratic formula, the smaller positive one wins. Far small spheres lose everything to b^2 ~ 4ac.
+#pragma once
+#include "ray/ray_sphere_geometric.hpp"
+
+namespace sw::ray {
+
+struct RaySphereQuadratic {
+  static constexpr std::string_view id = "ray-sphere-quadratic";
+  static constexpr std::string_view summary = "Ray-sphere, textbook quadratic formula";
+  enum Line : std::uint32_t { coeffs = 1, disc, miss, roots, near, far, none };
+  static constexpr std::array<std::string_view, 7> lines = {
+      "f <- o - c; a <- d . d; b <- 2 f . d; cc <- f . f - r^2",
+      "D <- b^2 - 4 a cc",
+      "if D < 0: miss",
+      "t0 <- (-b - sqrt(D)) / 2a; t1 <- (-b + sqrt(D)) / 2a",
+      "if t0 > 0: hit at t0",
+      "if t1 > 0: hit at t1",
+      "miss                                         -- the sphere is behind",
+  };
+  static constexpr Listing listing() { return {"Quadratic ray-sphere", lines}; }
+};
+
+template <class Num, class Probe = NoProbe>
+SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+  using L = RaySphereQuadratic;
+  SphereHit<Num> out;
+  const Vec3<Num> f = r.o - c;
+  const Num a = dot(r.d, r.d), b = Num(Num(2) * dot(f, r.d)), cc = Num(dot(f, f) - radius * radius);
+  if constexpr (Probe::on)
+    probe.step(L::coeffs, StepKind::init).num("a", a).num("b", b).num("c", cc)
+        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z).geo(GeoKind::sphere, c.x, c.y, c.z, radius);
+  const Num disc = Num(b * b - Num(4) * a * cc);
+  if constexpr (Probe::on) probe.step(L::disc, StepKind::decide).num("D", disc);
+  if (disc < Num(0)) {
+    if constexpr (Probe::on) probe.step(L::miss, StepKind::miss);
+    return out;
+  }
+  const Num two_a = Num(Num(2) * a), nb = Num(-b);
+  bool e0 = true, e1 = true;
+  const Num t0 = Num(add_root(nb, -1, disc, e0) / two_a), t1 = Num(add_root(nb, 1, disc, e1) / two_a);
+  if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("t0", t0).num("t1", t1);
+  if (t0 > Num(0)) {
+    out = {true, t0, e0};
+    if constexpr (Probe::on) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + t0 * r.d));
+  } else if (t1 > Num(0)) {
+    out = {true, t1, e1};
+    if constexpr (Probe::on) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + t1 * r.d));
+  } else {
+    if constexpr (Probe::on) probe.step(L::none, StepKind::miss);
+  }
+  return out;
+}
+
+}  // namespace sw::ray

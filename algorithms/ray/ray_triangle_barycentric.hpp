@@ -1,0 +1,69 @@
+// The implementor's-guide test: intersect the triangle's plane, then find the hit point's
+// barycentric coordinates from the precomputed edge vectors e1, e2 in the 2D projection that
+// drops the normal's largest axis (that projection keeps the triangle non-degenerate).
+#pragma once
+#include "ray/ray_triangle_watertight.hpp"
+
+namespace sw::ray {
+
+struct RayTriangleBarycentric {
+  static constexpr std::string_view id = "ray-triangle-barycentric";
+  static constexpr std::string_view summary = "Ray-triangle, implementor's guide: plane hit, then barycentrics from e1, e2";
+  enum Line : std::uint32_t { edges = 1, normal, denom, t, point, drop, solve, inside, hit };
+  static constexpr std::array<std::string_view, 9> lines = {
+      "e1 <- v1 - v0; e2 <- v2 - v0                  -- precomputed per triangle",
+      "n <- e1 x e2",
+      "den <- n . d; if den = 0: miss                 -- parallel to the plane (or in it)",
+      "t <- n . (v0 - o) / den; if t <= 0: miss",
+      "P <- o + t d",
+      "k <- axis of max |n|; (i, j) the other two     -- project along k",
+      "w <- P - v0; beta <- (w_i e2_j - w_j e2_i) / n_k'; gamma <- (e1_i w_j - e1_j w_i) / n_k'",
+      "if beta < 0 or gamma < 0 or beta + gamma > 1: miss",
+      "hit: b <- (1 - beta - gamma, beta, gamma)",
+  };
+  static constexpr Listing listing() { return {"Implementor's-guide ray-triangle", lines}; }
+};
+
+template <class Num, class Probe = NoProbe>
+TriangleHit<Num> ray_triangle_barycentric(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx, Probe& probe) {
+  using L = RayTriangleBarycentric;
+  TriangleHit<Num> out;
+  const Vec3<Num> e1 = vtx[1] - vtx[0], e2 = vtx[2] - vtx[0];
+  const Vec3<Num> n = cross(e1, e2);
+  if constexpr (Probe::on)
+    probe.step(L::normal, StepKind::init).num("nx", n.x).num("ny", n.y).num("nz", n.z)
+        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
+        .geo(GeoKind::triangle3, vtx[0].x, vtx[0].y, vtx[0].z, vtx[1].x, vtx[1].y, vtx[1].z, vtx[2].x, vtx[2].y, vtx[2].z);
+  const Num den = dot(n, r.d);
+  if constexpr (Probe::on) probe.step(L::denom, StepKind::decide).num("den", den);
+  if (den == Num(0)) {
+    if constexpr (Probe::on) probe.step(L::denom, StepKind::miss);
+    return out;
+  }
+  const Num t = Num(dot(n, Vec3<Num>(vtx[0] - r.o)) / den);
+  if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
+  if (!(t > Num(0))) {
+    if constexpr (Probe::on) probe.step(L::t, StepKind::miss);
+    return out;
+  }
+  const Vec3<Num> p = r.o + t * r.d;
+  if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p);
+  const int k = max_axis(n), i = (k + 1) % 3, j = (k + 2) % 3;
+  if constexpr (Probe::on) probe.step(L::drop, StepKind::decide).idx("k", k);
+  const Vec3<Num> w = p - vtx[0];
+  const Num nk = Num(e1[i] * e2[j] - e1[j] * e2[i]);  // = n_k, nonzero as |n_k| is max and n != 0
+  const Num beta = Num(Num(w[i] * e2[j] - w[j] * e2[i]) / nk);
+  const Num gamma = Num(Num(e1[i] * w[j] - e1[j] * w[i]) / nk);
+  if constexpr (Probe::on) probe.step(L::solve, StepKind::decide).num("beta", beta).num("gamma", gamma);
+  if (beta < Num(0) || gamma < Num(0) || Num(beta + gamma) > Num(1)) {
+    if constexpr (Probe::on) probe.step(L::inside, StepKind::miss);
+    return out;
+  }
+  out.hit = true;
+  out.t = t;
+  out.b = {Num(Num(1) - beta - gamma), beta, gamma};
+  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(p);
+  return out;
+}
+
+}  // namespace sw::ray

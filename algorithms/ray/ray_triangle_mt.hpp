@@ -1,0 +1,71 @@
+// Möller-Trumbore (1997): solve o + t d = (1-u-v) v0 + u v1 + v v2 by Cramer's rule with scalar
+// triple products, testing u and v as soon as each is known. No epsilon: det = 0 (ray parallel to
+// the plane, or in it) is the only rejection of that kind, so the semantics stay defined.
+#pragma once
+#include "ray/ray_triangle_watertight.hpp"
+
+namespace sw::ray {
+
+struct RayTriangleMT {
+  static constexpr std::string_view id = "ray-triangle-mt";
+  static constexpr std::string_view summary = "Ray-triangle, Moller-Trumbore: Cramer's rule with triple products";
+  enum Line : std::uint32_t { edges = 1, pvec, det, inv, tvec, u, qvec, v, t, hit };
+  static constexpr std::array<std::string_view, 10> lines = {
+      "e1 <- v1 - v0; e2 <- v2 - v0",
+      "p <- d x e2",
+      "det <- e1 . p; if det = 0: miss                 -- parallel to the plane (or in it)",
+      "inv <- 1 / det",
+      "s <- o - v0",
+      "u <- (s . p) inv; if u < 0 or u > 1: miss",
+      "q <- s x e1",
+      "v <- (d . q) inv; if v < 0 or u + v > 1: miss",
+      "t <- (e2 . q) inv; if t <= 0: miss",
+      "hit: b <- (1 - u - v, u, v)",
+  };
+  static constexpr Listing listing() { return {"Moller-Trumbore", lines}; }
+};
+
+template <class Num, class Probe = NoProbe>
+TriangleHit<Num> ray_triangle_mt(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx, Probe& probe) {
+  using L = RayTriangleMT;
+  TriangleHit<Num> out;
+  const Vec3<Num> e1 = vtx[1] - vtx[0], e2 = vtx[2] - vtx[0];
+  if constexpr (Probe::on)
+    probe.step(L::edges, StepKind::init).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
+        .geo(GeoKind::triangle3, vtx[0].x, vtx[0].y, vtx[0].z, vtx[1].x, vtx[1].y, vtx[1].z, vtx[2].x, vtx[2].y, vtx[2].z);
+  const Vec3<Num> p = cross(r.d, e2);
+  const Num det = dot(e1, p);
+  if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
+  if (det == Num(0)) {
+    if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
+    return out;
+  }
+  const Num inv = Num(Num(1) / det);
+  const Vec3<Num> s = r.o - vtx[0];
+  const Num u = Num(dot(s, p) * inv);
+  if constexpr (Probe::on) probe.step(L::u, StepKind::decide).num("u", u);
+  if (u < Num(0) || u > Num(1)) {
+    if constexpr (Probe::on) probe.step(L::u, StepKind::miss);
+    return out;
+  }
+  const Vec3<Num> q = cross(s, e1);
+  const Num v = Num(dot(r.d, q) * inv);
+  if constexpr (Probe::on) probe.step(L::v, StepKind::decide).num("v", v);
+  if (v < Num(0) || Num(u + v) > Num(1)) {
+    if constexpr (Probe::on) probe.step(L::v, StepKind::miss);
+    return out;
+  }
+  const Num t = Num(dot(e2, q) * inv);
+  if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
+  if (!(t > Num(0))) {
+    if constexpr (Probe::on) probe.step(L::t, StepKind::miss);
+    return out;
+  }
+  out.hit = true;
+  out.t = t;
+  out.b = {Num(Num(1) - u - v), u, v};
+  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(Vec3<Num>(r.o + t * r.d));
+  return out;
+}
+
+}  // namespace sw::ray

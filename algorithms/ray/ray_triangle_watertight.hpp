@@ -1,0 +1,100 @@
+// Watertight ray-triangle test (Woop, Benthin and Wald 2013): translate to the ray origin, permute
+// so the ray's largest component is z, shear the ray onto +z, then take the three 2D edge
+// functions. The edge functions of a shared edge are computed from the same two sheared points by
+// the same expression in both triangles, so a ray can never slip between them.
+#pragma once
+#include <array>
+#include <string_view>
+#include <type_traits>
+#include "core/probe.hpp"
+#include "ray/ray_common.hpp"
+
+namespace sw::ray {
+
+template <class Num> struct TriangleHit {
+  bool hit = false;
+  Num t{};
+  std::array<Num, 3> b{};  // barycentric weights of v0, v1, v2
+};
+
+struct RayTriangleWatertight {
+  static constexpr std::string_view id = "ray-triangle-watertight";
+  static constexpr std::string_view summary = "Ray-triangle, watertight (Woop-Benthin-Wald 2013): shear to +z, 2D edge functions";
+  enum Line : std::uint32_t { axes = 1, shear, translate, project, edges, retry, sides, det, depth, sign, hit };
+  static constexpr std::array<std::string_view, 11> lines = {
+      "kz <- axis of max |d|; kx, ky the next two; swap kx, ky if d_kz < 0   -- keeps the winding",
+      "Sx <- d_kx / d_kz; Sy <- d_ky / d_kz; Sz <- 1 / d_kz",
+      "A, B, C <- v0 - o, v1 - o, v2 - o",
+      "P' <- (P_kx - Sx P_kz, P_ky - Sy P_kz) for P in A, B, C   -- the ray is now the +z axis",
+      "U <- Cx By - Cy Bx; V <- Ax Cy - Ay Cx; W <- Bx Ay - By Ax",
+      "if U, V or W = 0 in float: redo the edge functions in double",
+      "if some of U, V, W < 0 and some > 0: miss              -- the axis passes outside an edge",
+      "det <- U + V + W; if det = 0: miss                      -- the ray is parallel to the plane",
+      "T <- U Sz A_kz + V Sz B_kz + W Sz C_kz",
+      "if T = 0 or sign(T) != sign(det): miss                 -- t = T/det must be > 0",
+      "hit: t <- T / det; b <- (U, V, W) / det",
+  };
+  static constexpr Listing listing() { return {"Watertight ray-triangle", lines}; }
+};
+
+template <class Num, class Probe = NoProbe>
+TriangleHit<Num> ray_triangle_watertight(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) {
+  using L = RayTriangleWatertight;
+  TriangleHit<Num> out;
+  const int kz = max_axis(r.d);
+  int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+  if (r.d[kz] < Num(0)) std::swap(kx, ky);
+  if constexpr (Probe::on)
+    probe.step(L::axes, StepKind::init).idx("kx", kx).idx("ky", ky).idx("kz", kz)
+        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
+        .geo(GeoKind::triangle3, v[0].x, v[0].y, v[0].z, v[1].x, v[1].y, v[1].z, v[2].x, v[2].y, v[2].z);
+  const Num sx = Num(r.d[kx] / r.d[kz]), sy = Num(r.d[ky] / r.d[kz]), sz = Num(Num(1) / r.d[kz]);
+  if constexpr (Probe::on) probe.step(L::shear, StepKind::init).num("Sx", sx).num("Sy", sy).num("Sz", sz);
+  const Vec3<Num> a = v[0] - r.o, b = v[1] - r.o, c = v[2] - r.o;
+  if constexpr (Probe::on) probe.step(L::translate, StepKind::init).point(a).point(b).point(c);
+  const Num ax = Num(a[kx] - sx * a[kz]), ay = Num(a[ky] - sy * a[kz]);
+  const Num bx = Num(b[kx] - sx * b[kz]), by = Num(b[ky] - sy * b[kz]);
+  const Num cx = Num(c[kx] - sx * c[kz]), cy = Num(c[ky] - sy * c[kz]);
+  if constexpr (Probe::on)
+    probe.step(L::project, StepKind::init).num("Ax", ax).num("Ay", ay).num("Bx", bx).num("By", by).num("Cx", cx).num("Cy", cy);
+  Num u = Num(cx * by - cy * bx), w_v = Num(ax * cy - ay * cx), w = Num(bx * ay - by * ax);
+  if constexpr (Probe::on) probe.step(L::edges, StepKind::decide).num("U", u).num("V", w_v).num("W", w);
+  if constexpr (std::is_same_v<Num, float>) {
+    if (u == 0.0f || w_v == 0.0f || w == 0.0f) {
+      // Float edge functions of exactly zero are retried with double products of the same
+      // float operands (as the paper does), so an edge is decided consistently.
+      const double cxy = double(cx) * double(by), cyx = double(cy) * double(bx);
+      const double axy = double(ax) * double(cy), ayx = double(ay) * double(cx);
+      const double bxy = double(bx) * double(ay), byx = double(by) * double(ax);
+      u = float(cxy - cyx), w_v = float(axy - ayx), w = float(bxy - byx);
+      if constexpr (Probe::on) probe.step(L::retry, StepKind::decide).num("U", u).num("V", w_v).num("W", w);
+    }
+  }
+  const Num zero(0);
+  if ((u < zero || w_v < zero || w < zero) && (u > zero || w_v > zero || w > zero)) {
+    if constexpr (Probe::on) probe.step(L::sides, StepKind::miss);
+    return out;
+  }
+  const Num det = Num(u + w_v + w);
+  if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
+  if (det == zero) {
+    if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
+    return out;
+  }
+  const Num t_num = Num(u * Num(sz * a[kz]) + w_v * Num(sz * b[kz]) + w * Num(sz * c[kz]));
+  if constexpr (Probe::on) probe.step(L::depth, StepKind::decide).num("T", t_num);
+  if (t_num == zero || (t_num < zero) != (det < zero)) {
+    if constexpr (Probe::on) probe.step(L::sign, StepKind::miss);
+    return out;
+  }
+  out.hit = true;
+  out.t = Num(t_num / det);
+  out.b = {Num(u / det), Num(w_v / det), Num(w / det)};
+  if constexpr (Probe::on) {
+    const Vec3<Num> p = r.o + out.t * r.d;
+    probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p);
+  }
+  return out;
+}
+
+}  // namespace sw::ray

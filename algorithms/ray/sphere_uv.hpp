@@ -1,0 +1,51 @@
+// Inverse mapping of a sphere: the unit normal at a point, its latitude and longitude, and the
+// texture coordinates (u, v). The pole axis is +z; longitude is measured from +x toward +y.
+// Seam: longitude jumps from +pi to -pi across the half-plane y = 0, x < 0 (atan2(+0, x<0) = +pi
+// gives u = 1, atan2(-0, x<0) = -pi gives u = 0). Poles: x = y = 0 gives longitude atan2(0, 0) = 0
+// (u = 1/2) and v = 0 or 1. The point is projected radially (it need not lie exactly on the sphere).
+#pragma once
+#include <array>
+#include <string_view>
+#include "core/probe.hpp"
+#include "ray/ray_common.hpp"
+
+namespace sw::ray {
+
+template <class Num> struct SphereUV {
+  Vec3<Num> normal;
+  Num lat{}, lon{}, u{}, v{};
+};
+
+struct SphereUVAlgo {
+  static constexpr std::string_view id = "sphere-uv";
+  static constexpr std::string_view summary = "Inverse mapping of a sphere: normal, latitude/longitude (atan2), (u, v)";
+  enum Line : std::uint32_t { normal = 1, lon, lat, uv };
+  static constexpr std::array<std::string_view, 4> lines = {
+      "N <- (P - c) / |P - c|                        -- the outward unit normal",
+      "lon <- atan2(N_y, N_x)                          -- in (-pi, pi]; the seam is y = 0, x < 0",
+      "lat <- atan2(N_z, sqrt(N_x^2 + N_y^2))          -- in [-pi/2, pi/2]; well conditioned at the poles",
+      "u <- (lon + pi) / 2pi; v <- (lat + pi/2) / pi",
+  };
+  static constexpr Listing listing() { return {"Sphere inverse mapping", lines}; }
+};
+
+// Precondition: p != c (validated).
+template <class Num, class Probe = NoProbe> SphereUV<Num> sphere_uv(const Vec3<Num>& c, const Vec3<Num>& p, Probe& probe) {
+  using L = SphereUVAlgo;
+  SphereUV<Num> out;
+  const Vec3<Num> q = p - c;
+  out.normal = Num(Num(1) / sqrt_any(dot(q, q))) * q;
+  const Vec3<Num>& n = out.normal;
+  if constexpr (Probe::on) probe.step(L::normal, StepKind::init).num("Nx", n.x).num("Ny", n.y).num("Nz", n.z).point(p).geo(GeoKind::segment3, p.x, p.y, p.z, Num(p.x + n.x), Num(p.y + n.y), Num(p.z + n.z));
+  out.lon = atan2_num(n.y, n.x);
+  if constexpr (Probe::on) probe.step(L::lon, StepKind::advance).num("lon", out.lon);
+  out.lat = atan2_num(n.z, sqrt_any(Num(n.x * n.x + n.y * n.y)));
+  if constexpr (Probe::on) probe.step(L::lat, StepKind::advance).num("lat", out.lat);
+  const Num pi = pi_num<Num>();
+  out.u = Num(Num(out.lon + pi) / Num(Num(2) * pi));
+  out.v = Num(Num(out.lat + Num(pi * Num(0.5))) / pi);
+  if constexpr (Probe::on) probe.step(L::uv, StepKind::done).num("u", out.u).num("v", out.v);
+  return out;
+}
+
+}  // namespace sw::ray
