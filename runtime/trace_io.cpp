@@ -128,7 +128,9 @@ bool step_agrees(const Json& want, const Json& got, bool decisions_only) {
   const Json& gg = got.at("geo");
   if (wg.size() != gg.size()) return false;
   for (std::size_t k = 0; k < wg.size(); ++k) {
-    const auto& [name, values] = *wg[k].items().begin();
+    const auto first = wg[k].begin();  // each geometry item is a one-key object
+    const std::string name = first.key();
+    const Json& values = first.value();
     if (!gg[k].is_object() || gg[k].size() != 1 || !gg[k].contains(name)) return false;
     if (decisions_only && name != "pixel") continue;
     if (!same_value(values, gg[k][name])) return false;
