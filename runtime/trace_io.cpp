@@ -1,4 +1,5 @@
 #include "trace_io.hpp"
+#include <functional>
 #include <random>
 #include <sstream>
 
@@ -94,25 +95,37 @@ bool same_value(const Json& a, const Json& b) {
   return a == b;
 }
 
-// The reference step as JSON, in the stream's format.
-Json reference_step(const Recorder<Rational>& ref, std::size_t i) {
-  const StepRecord& s = ref.at(i);
-  Json vars = Json::object(), geo = Json::array();
-  for (auto v = s.var_begin; v < s.var_end; ++v) {
-    const VarRecord& var = ref.var_at(v);
-    vars[var.name] = var.is_int ? Json(ref.int_value(var.slot)) : Json(ref.num_text(var.slot));
-  }
-  for (auto g = s.geo_begin; g < s.geo_end; ++g) {
-    const GeoRecord& item = ref.geo_at(g);
-    Json values = Json::array();
-    for (int k = 0; k < geo_arity(item.kind); ++k)
-      values.push_back(item.kind == GeoKind::pixel ? Json(ref.int_value(item.slot + k)) : Json(ref.num_text(item.slot + k)));
-    geo.push_back(Json{{std::string(geo_name(item.kind)), values}});
-  }
-  return Json{{"step", i}, {"line", s.line}, {"kind", kind_name(s.kind)}, {"vars", vars}, {"geo", geo}};
-}
+// Calls back once per line written to it: `check` watches the exact run's JSONL as it is made.
+class LineSink : public std::streambuf {
+ public:
+  explicit LineSink(std::function<void(const std::string&)> on_line) : on_line_(std::move(on_line)) {}
 
-// Compares one step; returns an empty string if it agrees.
+ protected:
+  int_type overflow(int_type c) override {
+    if (c != traits_type::eof()) put(static_cast<char>(c));
+    return c;
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    for (std::streamsize i = 0; i < n; ++i) put(s[i]);
+    return n;
+  }
+
+ private:
+  void put(char c) {
+    if (c != '\n') return line_.push_back(c);
+    on_line_(line_);
+    line_.clear();
+  }
+  std::function<void(const std::string&)> on_line_;
+  std::string line_;
+};
+
+// Thrown through the exact run to stop it at the first divergence.
+struct Diverged {
+  std::string message;
+};
+
+// Does the trace's step agree with the reference step?
 bool step_agrees(const Json& want, const Json& got, bool decisions_only) {
   if (got.at("line") != want.at("line") || got.at("kind") != want.at("kind")) return false;
   const Json& wv = want.at("vars");
@@ -156,14 +169,19 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
   CheckReport rep;
   std::string line;
   std::size_t lineno = 0;
-  auto next_line = [&]() -> std::optional<Json> {
+  // The next non-blank line's text (in `line`), or false at the end.
+  auto next_text = [&]() -> bool {
     while (std::getline(in, line)) {
       ++lineno;
-      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-      return parse_json_text(line, "line " + std::to_string(lineno));
+      if (line.find_first_not_of(" \t\r") != std::string::npos) return true;
     }
-    return std::nullopt;
+    return false;
   };
+  auto next_line = [&]() -> std::optional<Json> {
+    if (!next_text()) return std::nullopt;
+    return parse_json_text(line, "line " + std::to_string(lineno));
+  };
+  auto is_result = [](const Json& j) { return j.is_object() && j.contains("result"); };
   try {
     auto header = next_line();
     if (!header) throw InputError("empty trace");
@@ -174,48 +192,51 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
     const Json& numeric = require(*header, "numeric", "line 1");
     if (!numeric.is_string()) throw InputError("line 1: \"numeric\" must be a string");
     parse_numeric_for(alg, numeric.get<std::string>());
-    const Json& input = require(*header, "input", "line 1");
+    const Json input = require(*header, "input", "line 1");
+    if (!alg.supports(Numeric::exact))
+      throw InputError("check replays in exact mode, and " + std::string(alg.id) + " has none");
     alg.validate(input, Numeric::exact);
-    Recorded reference = alg.record(input, Numeric::exact);
-    const auto& ref = dynamic_cast<const Recorder<Rational>&>(*reference.trace);
-    const Json oracle = alg.oracle(input);
 
+    // Replay: the exact run streams its steps; each is compared with the trace's next line as it
+    // is made, so memory stays flat however long the trace.
     std::size_t i = 0;
-    std::optional<Json> result;
-    while (auto j = next_line()) {
-      if (j->is_object() && j->contains("result")) {
-        result = (*j)["result"];
-        if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
-        break;
+    std::optional<Json> pending;  // a trace line read but not yet matched
+    LineSink sink([&](const std::string& text) {
+      if (text.rfind("{\"result\"", 0) == 0) return;  // the oracle judges the result
+      if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
+      if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
+        ++i;
+        return;
       }
-      require_step_shape(*j, lineno);
-      if (i >= ref.size()) {
-        rep.status = 1;
-        rep.message = "step " + std::to_string(i) + " diverges: expected the end of the steps, got " + j->dump();
-        return rep;
-      }
-      const Json want = reference_step(ref, i);
-      if (!step_agrees(want, *j, decisions_only)) {
-        rep.status = 1;
-        rep.message = "step " + std::to_string(i) + " diverges: expected " + want.dump() + " got " + j->dump();
-        return rep;
-      }
+      const Json want = Json::parse(text);
+      pending = parse_json_text(line, "line " + std::to_string(lineno));
+      if (is_result(*pending))
+        throw Diverged{"step " + std::to_string(i) + " diverges: expected " + want.dump() + " got the end of the steps"};
+      require_step_shape(*pending, lineno);
+      if (!step_agrees(want, *pending, decisions_only))
+        throw Diverged{"step " + std::to_string(i) + " diverges: expected " + want.dump() + " got " + pending->dump()};
+      pending.reset();
       ++i;
+    });
+    std::ostream replay(&sink);
+    replay.exceptions(std::ios::badbit);  // let Diverged and InputError through the stream
+    alg.stream(input, Numeric::exact, replay);
+
+    auto last = next_line();
+    if (last && !is_result(*last)) {
+      require_step_shape(*last, lineno);
+      throw Diverged{"step " + std::to_string(i) + " diverges: expected the end of the steps, got " + last->dump()};
     }
-    if (!result) throw InputError("no result line ({\"result\":...}) at the end of the trace");
-    if (i < ref.size()) {
-      rep.status = 1;
-      rep.message = "step " + std::to_string(i) + " diverges: expected " + reference_step(ref, i).dump() + " got the end of the steps";
-      return rep;
-    }
+    if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
+    if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
+    const Json oracle = alg.oracle(input);
+    if (!same_value(oracle, (*last)["result"]))
+      throw Diverged{"result diverges: expected " + oracle.dump() + " got " + (*last)["result"].dump()};
     rep.steps = i;
-    if (!same_value(oracle, *result)) {
-      rep.status = 1;
-      rep.message = "result diverges: expected " + oracle.dump() + " got " + result->dump();
-      return rep;
-    }
     rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the exact oracle";
-    return rep;
+  } catch (const Diverged& d) {
+    rep.status = 1;
+    rep.message = d.message;
   } catch (const InputError& e) {
     rep.status = 2;
     rep.message = e.what();

@@ -1,6 +1,7 @@
 // Streams each step as one JSON line as soon as the next one starts (or on finish()), so memory
 // stays flat for any trace length. Format: docs/trace-format.md.
 #pragma once
+#include <exception>
 #include <ostream>
 #include <string>
 #include "core/number.hpp"
@@ -15,7 +16,15 @@ template <class Num> class JsonlProbe {
 
   explicit JsonlProbe(std::ostream& out) : out_(out) {}
   JsonlProbe(const JsonlProbe&) = delete;
-  ~JsonlProbe() { finish(); }
+  // Flushes the last step, unless an exception is unwinding the run (the output is abandoned
+  // then, and the stream may be what threw).
+  ~JsonlProbe() {
+    if (std::uncaught_exceptions() > 0) return;
+    try {
+      finish();
+    } catch (...) {
+    }
+  }
 
   JsonlProbe& step(std::uint32_t line, StepKind kind) {
     finish();
