@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Renders the screenshot beside each lesson (lessons/<name>.png) with the headless renderer, at a
+# step that shows the lesson's point, as a small palette PNG. Usage: lessons/screenshots.sh [build-dir]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+STEPWISE=${1:-build}/stepwise
+shot() {  # lesson [step]; without a step, the lesson's own start step
+  "$STEPWISE" render --lesson "lessons/$1.md" ${2:+--step "$2"} --out "lessons/$1.png" --size 1280x800
+  if command -v convert >/dev/null; then convert "lessons/$1.png" -strip +dither -colors 255 "PNG8:lessons/$1.png"; fi
+}
+shot 01-dda-line 14        # pixels so far, with dp0 in the state panel
+shot 02-grid-walk 6        # the second cell of the two-pixel corner case
+shot 03-bresenham 14       # the decision variable e after a minor step
+shot 04-float-drift 3939   # the first pixel where float and exact differ
+shot 05-triangle-crack     # (ray family) the lesson's start step
+shot 06-far-sphere         # (ray family) the lesson's start step

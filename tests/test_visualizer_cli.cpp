@@ -1,0 +1,165 @@
+// The two executables: `stepwise render` (PNG and GIF through OSMesa, bad input -> exit 2 and no
+// file) and `stepwise-gui` under xvfb-run (frames, screenshot, exit 0).
+#ifdef SW_HAVE_VISUALIZER
+#include <catch2/catch.hpp>
+#include <gif_lib.h>
+#include <stb_image.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string err;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+fs::path scratch_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("sw-vis-cli-" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// Runs a shell command line; returns the exit status and what it wrote to stderr.
+Result run(const std::string& cmd, const fs::path& dir) {
+  const fs::path err = dir / "stderr.txt";
+  const int rc = std::system((cmd + " 2>" + quote(err.string()) + " >/dev/null").c_str());
+  std::ifstream f(err);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, s.str()};
+}
+
+std::string stepwise() { return quote(SW_STEPWISE_EXE); }
+std::string lesson(const char* name) { return quote((fs::path(SW_SOURCE_DIR) / "lessons" / name).string()); }
+
+// Only the scratch files the test made itself: nothing partial left behind.
+bool only_files(const fs::path& dir, std::initializer_list<const char*> names) {
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    ++n;
+    bool known = false;
+    for (const char* k : names) known |= e.path().filename() == k;
+    if (!known) return false;
+  }
+  return n == names.size();
+}
+
+}  // namespace
+
+TEST_CASE("visualizer cli: stepwise render: a PNG of a lesson step", "[visualizer][cli]") {
+  const fs::path dir = scratch_dir("png");
+  const fs::path out = dir / "frame.png";
+  const Result r = run(stepwise() + " render --lesson " + lesson("01-dda-line.md") + " --step 9 --size 480x300 --out " + quote(out.string()), dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  int w = 0, h = 0, n = 0;
+  unsigned char* img = stbi_load(out.c_str(), &w, &h, &n, 4);
+  REQUIRE(img);
+  CHECK(w == 480);
+  CHECK(h == 300);
+  stbi_image_free(img);
+}
+
+TEST_CASE("visualizer cli: stepwise render: a GIF has one frame per step of the inclusive range", "[visualizer][cli]") {
+  const fs::path dir = scratch_dir("gif");
+  const fs::path out = dir / "anim.gif";
+  const Result r = run(stepwise() + " render --algorithm bresenham-line --input '{\"p0\":[0,0],\"p1\":[6,2]}' --numeric int" +
+                           " --gif " + quote(out.string()) + " --from 3 --to 9 --delay 100 --size 400x260",
+                       dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  int err = 0;
+  GifFileType* gif = DGifOpenFileName(out.c_str(), &err);
+  REQUIRE(gif);
+  REQUIRE(DGifSlurp(gif) == GIF_OK);
+  CHECK(gif->ImageCount == 7);
+  CHECK(gif->SWidth == 400);
+  CHECK(gif->SHeight == 260);
+  GraphicsControlBlock gcb;
+  REQUIRE(DGifSavedExtensionToGCB(gif, 0, &gcb) == GIF_OK);
+  CHECK(gcb.DelayTime == 10);
+  DGifCloseFile(gif, &err);
+}
+
+TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments exit 2 with one line and no file", "[visualizer][cli]") {
+  const fs::path dir = scratch_dir("bad");
+  const fs::path out = dir / "frame.png", gif = dir / "anim.gif";
+  struct Case {
+    const char* name;
+    std::string lesson_text, args, message;
+  };
+  const std::string good_head = "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[5,2]}\n";
+  const std::vector<Case> cases = {
+      {"no front matter", "# A lesson\nno dashes\n", "", "front-matter"},
+      {"unclosed front matter", good_head, "", "no closing"},
+      {"unknown algorithm", "---\nalgorithm: dda-circle\ninput: {}\n---\n", "", "unknown algorithm 'dda-circle'"},
+      {"bad input", "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[\"1/0\",2]}\n---\n", "", "zero denominator"},
+      {"bad JSON", "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0\n---\n", "", "malformed JSON"},
+      {"bad heading", good_head + "---\n## on line 42\n", "", "not a listing line"},
+      {"step past the end", good_head + "---\n", " --step 999", "past the last step"},
+      {"gif range reversed", good_head + "---\n", " --from 5 --to 2", "is after --to"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    std::ofstream(dir / "lesson.md") << c.lesson_text;
+    const bool as_gif = c.args.find("--from") != std::string::npos;
+    const std::string target = as_gif ? " --gif " + quote(gif.string()) : " --out " + quote(out.string());
+    const Result r = run(stepwise() + " render --lesson " + quote((dir / "lesson.md").string()) + c.args + target + " --size 400x260", dir);
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains(c.message));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(only_files(dir, {"lesson.md", "stderr.txt"}));
+  }
+  const Result unknown = run(stepwise() + " render --algorithm nope --input '{}' --out " + quote(out.string()), dir);
+  CHECK(unknown.status == 2);
+  CHECK_THAT(unknown.err, Catch::Contains("unknown algorithm 'nope'"));
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("visualizer gui: stepwise-gui starts under xvfb-run, renders frames, takes a screenshot and exits 0", "[visualizer][gui]") {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
+    WARN("xvfb-run is not installed (scripts/setup.sh installs it): skipping the GUI test");
+    return;
+  }
+  const fs::path dir = scratch_dir("gui");
+  const std::string xvfb = "xvfb-run -a -s '-screen 0 800x500x24' ";
+  const fs::path shot = dir / "shot.png";
+  Result r = run(xvfb + quote(SW_GUI_EXE) + " --size 800x500 --frames 4 --screenshot " + quote(shot.string()), dir);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  int w = 0, h = 0, n = 0;
+  unsigned char* img = stbi_load(shot.c_str(), &w, &h, &n, 4);
+  REQUIRE(img);
+  CHECK(w == 800);
+  CHECK(h == 500);
+  // Not a blank frame: the panels drew something other than the clear colour.
+  std::size_t differing = 0;
+  for (int i = 0; i < w * h; ++i) differing += img[4 * i] != img[0] || img[4 * i + 1] != img[1] || img[4 * i + 2] != img[2];
+  CHECK(differing > std::size_t(w * h / 20));
+  stbi_image_free(img);
+
+  // A lesson that fails to load: the window shows the message, still writes its screenshot, exits 2.
+  std::ofstream(dir / "bad.md") << "---\nalgorithm: dda-circle\ninput: {}\n---\n";
+  const fs::path bad_shot = dir / "bad.png";
+  r = run(xvfb + quote(SW_GUI_EXE) + " --size 800x500 --frames 2 --lesson " + quote((dir / "bad.md").string()) + " --screenshot " +
+              quote(bad_shot.string()),
+          dir);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::Contains("unknown algorithm 'dda-circle'"));
+  CHECK(fs::exists(bad_shot));
+}
+#endif  // SW_HAVE_VISUALIZER

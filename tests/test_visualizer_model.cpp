@@ -1,0 +1,202 @@
+// The visualizer's model, without GL: lessons, the trace indexes, the incremental pixel texture
+// and the float-against-exact comparison.
+#ifdef SW_HAVE_VISUALIZER
+#include <catch2/catch.hpp>
+#include <map>
+#include <random>
+#include "compare.hpp"
+#include "lesson.hpp"
+#include "pixel_layer.hpp"
+#include "trace_model.hpp"
+
+using namespace sw;
+using namespace sw::vis;
+
+namespace {
+
+// A texture host in memory: what the GPU would hold.
+class MemoryTextures final : public TextureHost {
+ public:
+  ImTextureID create(int w, int h) override {
+    images_[++next_] = {w, h, std::vector<std::uint32_t>(std::size_t(w) * h, 0xdeadbeef)};
+    return reinterpret_cast<ImTextureID>(next_);
+  }
+  void update(ImTextureID t, int x, int y, int w, int h, const std::uint32_t* rgba, int stride) override {
+    Image& im = images_.at(reinterpret_cast<std::intptr_t>(t));
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) im.px[std::size_t(y + r) * im.w + x + c] = rgba[std::size_t(r) * stride + c];
+    updated_texels_ += std::size_t(w) * h;
+  }
+  void destroy(ImTextureID t) override { images_.erase(reinterpret_cast<std::intptr_t>(t)); }
+  struct Image {
+    int w, h;
+    std::vector<std::uint32_t> px;
+  };
+  const Image& image(ImTextureID t) const { return images_.at(reinterpret_cast<std::intptr_t>(t)); }
+  std::size_t updated_texels_ = 0;
+
+ private:
+  std::map<std::intptr_t, Image> images_;
+  std::intptr_t next_ = 0;
+};
+
+std::shared_ptr<const TraceModel> dda(const char* input, Numeric n = Numeric::exact, const char* alg = "dda-line") {
+  return record_model(find_algorithm(alg), parse_json_text(input, "test"), n);
+}
+
+// The texel colour each cell must have at `step`, computed from the trace directly.
+std::uint32_t expected_colour(const TraceModel& m, Pixel c, std::size_t step) {
+  std::uint32_t first = kNoStep;
+  for (const PlotEvent& e : m.plots())
+    if (e.cell == c && e.step <= step) first = std::min(first, e.step);
+  return first == kNoStep ? 0u : plot_colour(first, m.last());
+}
+
+void check_texture(const MemoryTextures& tex, const PixelLayer& layer, const TraceModel& m, std::size_t step) {
+  const CellWindow& w = layer.window();
+  REQUIRE(w.k == 1);
+  const auto& im = tex.image(layer.texture());
+  for (int v = 0; v < w.h; ++v)
+    for (int u = 0; u < w.w; ++u) {
+      const Pixel c{w.x0 + u, w.y0 + (w.h - 1 - v)};
+      INFO("cell " << c.x << "," << c.y << " step " << step);
+      REQUIRE(im.px[std::size_t(v) * w.w + u] == expected_colour(m, c, step));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("visualizer lesson: front matter, narration keys and the manifest", "[visualizer][lesson]") {
+  const Lesson l = parse_lesson(
+      "---\ntitle: T\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[5,2]}\nnumeric: exact\ncompare: float\nstep: 3\n---\n"
+      "Intro text.\n\n## on line 8\nPlot here.\n## on kind advance\nMove.\n",
+      "t.md");
+  CHECK(l.title == "T");
+  CHECK(l.algorithm->id == "dda-line");
+  CHECK(l.numeric == Numeric::exact);
+  REQUIRE(l.compare);
+  CHECK(*l.compare == Numeric::f32);
+  CHECK(l.start_step == 3);
+  REQUIRE(l.intro());
+  CHECK(l.intro()->text == "Intro text.");
+  REQUIRE(l.narration_for(8, StepKind::plot));
+  CHECK(l.narration_for(8, StepKind::plot)->text == "Plot here.");          // the line wins
+  CHECK(l.narration_for(9, StepKind::advance)->text == "Move.");            // else the kind
+  CHECK(l.narration_for(2, StepKind::decide) == nullptr);
+
+  const auto files = lesson_manifest(std::filesystem::path(SW_SOURCE_DIR) / "lessons");
+  REQUIRE(files.size() >= 3);
+  for (const auto& f : files) {
+    INFO(f);
+    const Lesson lesson = load_lesson(f);
+    CHECK(!lesson.sections.empty());
+    auto png = f;
+    CHECK(std::filesystem::exists(png.replace_extension(".png")));  // one screenshot per lesson
+  }
+}
+
+TEST_CASE("visualizer lesson: malformed lessons name the problem and the place", "[visualizer][lesson]") {
+  auto error_of = [](const std::string& text) {
+    try {
+      (void)parse_lesson(text, "bad.md");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string head = "---\nalgorithm: dda-line\n";
+  CHECK_THAT(error_of("no front matter\n"), Catch::Contains("bad.md:1") && Catch::Contains("---"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\n"), Catch::Contains("no closing"));
+  CHECK_THAT(error_of(head + "colour: red\n---\n"), Catch::Contains("bad.md:3") && Catch::Contains("colour"));
+  CHECK_THAT(error_of("---\nalgorithm: dda-circle\ninput: {}\n---\n"), Catch::Contains("unknown algorithm 'dda-circle'"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0]}\n---\n"), Catch::Contains("bad.md:3") && Catch::Contains("p1"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,\n---\n"), Catch::Contains("malformed JSON"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\nnumeric: int\n---\n"), Catch::Contains("does not run on 'int'"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\n---\n## on line 99\nx\n"), Catch::Contains("bad.md:5") && Catch::Contains("not a listing line"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\n---\n## on kind jump\nx\n"), Catch::Contains("unknown step kind"));
+  CHECK_THAT(error_of(head + "---\n"), Catch::Contains("input"));
+}
+
+TEST_CASE("visualizer model: plot order, cell lookup and state with changes", "[visualizer][model]") {
+  const auto m = dda(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})");
+  REQUIRE(m->plots().size() == 11);
+  for (std::size_t k = 0; k < m->plots().size(); ++k) {
+    const PlotEvent& e = m->plots()[k];
+    CHECK(m->trace().at(e.step).kind == StepKind::plot);
+    CHECK(m->step_of_cell(e.cell) == e.step);
+    CHECK(m->plots_through(e.step) == k + 1);
+    CHECK(m->plots_through(e.step - 1) == k);
+  }
+  CHECK(m->step_of_cell({100, 100}) == kNoStep);
+  // Step 4 is the start offset: dp0 and q are new, dx is old; exact values are p/q text.
+  const auto st = m->state_at(4);
+  auto var = [&](std::string_view n) {
+    for (const VarState& v : st)
+      if (v.name == n) return v;
+    FAIL("no variable " << n);
+    return VarState{};
+  };
+  CHECK(var("dp0y").text == "57/184");
+  CHECK(var("dp0y").changed);
+  CHECK(var("qy").text == "517/184");
+  CHECK_FALSE(var("dx").changed);
+  CHECK_FALSE(var("dx").set_here);
+  CHECK(var("dx").text == "23/2");
+  // Through the checkpoints: the state at a late step of a long trace equals a plain scan.
+  const auto long_line = dda(R"({"p0":[0.5,0.25],"p1":[900.5,301.25]})", Numeric::f64);
+  const std::size_t s = 1537;
+  std::map<std::string_view, std::string> scan;
+  for (std::size_t i = 0; i <= s; ++i)
+    for (auto v = long_line->trace().at(i).var_begin; v < long_line->trace().at(i).var_end; ++v)
+      scan[long_line->trace().var_at(v).name] = long_line->trace().value_text(long_line->trace().var_at(v));
+  const auto late = long_line->state_at(s);
+  REQUIRE(late.size() == scan.size());
+  for (const VarState& v : late) CHECK(scan[v.name] == v.text);
+  CHECK(long_line->find_kind(s, StepKind::plot, true).value() > s);
+  CHECK(long_line->find_kind(s, StepKind::done, false) == std::nullopt);
+}
+
+TEST_CASE("visualizer texture: scrubbing updates the texture incrementally and exactly", "[visualizer][texture]") {
+  const auto m = dda(R"({"p0":["1/3","1/7"],"p1":[40.5,17.25]})", Numeric::exact, "dda-grid-walk");
+  MemoryTextures tex;
+  PixelLayer layer(tex);
+  const WorldRect view{-3, -3, 45, 22};
+  REQUIRE(layer.prepare(m, view, 10.0, 0));
+  check_texture(tex, layer, *m, 0);
+  std::mt19937 rng(11);
+  for (int i = 0; i < 40; ++i) {
+    const std::size_t step = rng() % m->size();
+    tex.updated_texels_ = 0;
+    REQUIRE(layer.prepare(m, view, 10.0, step));
+    check_texture(tex, layer, *m, step);
+  }
+  // One step forward touches at most the texels of the pixels that step plotted.
+  const std::size_t at = m->plots()[10].step;
+  layer.prepare(m, view, 10.0, at - 1);
+  tex.updated_texels_ = 0;
+  layer.prepare(m, view, 10.0, at);
+  CHECK(tex.updated_texels_ == 1);
+  check_texture(tex, layer, *m, at);
+}
+
+TEST_CASE("visualizer compare: float drifts from exact on a long DDA line", "[visualizer][compare]") {
+  const char* in = R"({"p0":["1/10","1/3"],"p1":["3000.3","1000.7"]})";
+  const auto f = dda(in, Numeric::f32), e = dda(in, Numeric::exact);
+  const CompareStats st = compare_traces(*f, *e);
+  CHECK(st.steps_a == st.steps_b);
+  CHECK(st.pixels_a == 3000);
+  CHECK(st.pixel_mismatches > 0);
+  REQUIRE(st.first_decision_divergence);
+  REQUIRE(st.first_value_divergence);
+  CHECK(*st.first_value_divergence <= *st.first_decision_divergence);
+  // Before the divergence every pixel agrees; at it, the plotted pixels differ.
+  const std::size_t d = *st.first_decision_divergence;
+  CHECK(f->pixel_at(d) != e->pixel_at(d));
+  for (std::size_t s = 0; s < d; ++s) REQUIRE(f->pixel_at(s) == e->pixel_at(s));
+  // An exact run against itself does not diverge.
+  const CompareStats same = compare_traces(*e, *dda(in, Numeric::exact));
+  CHECK_FALSE(same.first_decision_divergence);
+  CHECK_FALSE(same.first_value_divergence);
+  CHECK(same.pixel_mismatches == 0);
+}
+#endif  // SW_HAVE_VISUALIZER

@@ -1,0 +1,295 @@
+// [SECTION] loading: lessons, algorithms, re-runs after edits
+// [SECTION] keys and playback
+// [SECTION] frame layout
+// [SECTION] canvases and the compare strip
+#include "app.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace sw::vis {
+
+App::App(TextureHost& textures, theme::Fonts fonts, std::filesystem::path lessons_dir)
+    : textures_(&textures), fonts_(fonts), lessons_dir_(std::move(lessons_dir)) {
+  try {
+    lessons_ = lesson_manifest(lessons_dir_);
+  } catch (const InputError& e) {
+    lessons_error_ = e.what();
+  }
+}
+
+// [SECTION] loading: lessons, algorithms, re-runs after edits
+
+bool App::open_first_lesson() {
+  if (lessons_.empty()) {
+    error_ = lessons_error_.empty() ? "no lessons in " + lessons_dir_.string() : lessons_error_;
+    return false;
+  }
+  return open_lesson(lessons_.front());
+}
+
+bool App::open_lesson(const std::filesystem::path& file) {
+  try {
+    Lesson l = load_lesson(file);
+    std::optional<Lesson> previous = std::move(lesson_);
+    lesson_ = std::move(l);
+    if (std::string err = load(*lesson_->algorithm, lesson_->input, lesson_->numeric, lesson_->compare, false); !err.empty()) {
+      lesson_ = std::move(previous);
+      error_ = file.filename().string() + ": " + err;
+      return false;
+    }
+    set_step(lesson_->start_step);
+    if (lesson_->focus) jump_and_focus(lesson_->start_step);
+    return true;
+  } catch (const InputError& e) {
+    error_ = e.what();
+    return false;
+  }
+}
+
+bool App::open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare) {
+  if (std::string err = load(alg, input, numeric, compare, false); !err.empty()) {
+    error_ = err;
+    return false;
+  }
+  lesson_.reset();
+  return true;
+}
+
+std::string App::load(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare, bool keep_view) {
+  std::shared_ptr<const TraceModel> a, b;
+  try {
+    a = record_model(alg, input, numeric);
+    if (compare) b = record_model(alg, input, *compare);
+  } catch (const std::exception& e) {  // InputError, or anything the run threw: show it, never crash
+    return std::string(alg.id) + ": " + e.what();
+  }
+  alg_ = &alg, input_ = input, numeric_ = numeric, compare_ = compare;
+  a_ = std::move(a), b_ = std::move(b);
+  stats_ = b_ ? std::optional(compare_traces(*a_, *b_)) : std::nullopt;
+  if (family_ != alg.family || !canvases_[0]) {
+    family_ = std::string(alg.family);
+    for (auto& c : canvases_) c = make_canvas(family_, *textures_);
+  }
+  if (!keep_view) {
+    canvases_[0]->fit();
+    step_ = 0;
+    playing_ = false;
+  }
+  // The timeline's "next of kind" starts on the kind that draws: plot, visit or hit.
+  for (StepKind k : {StepKind::plot, StepKind::visit, StepKind::hit, StepKind::decide})
+    if (a_->find_kind(0, k, true) || a_->trace().at(0).kind == k) {
+      seek_kind_ = int(k);
+      break;
+    }
+  error_.clear();
+  edit_error_.clear();
+  fill_endpoint_fields();
+  json_text_ = input_.dump();
+  step_ = std::min(step_, a_->last());
+  return {};
+}
+
+bool App::rerun_with_input(const Json& input) {
+  const double frac = steps() > 1 ? double(step_) / double(steps() - 1) : 0.0;
+  if (std::string err = load(*alg_, input, numeric_, compare_, true); !err.empty()) {
+    edit_error_ = err;
+    return false;
+  }
+  step_ = static_cast<std::size_t>(std::llround(frac * double(a_->last())));
+  return true;
+}
+
+void App::apply_input(const Json& input) {
+  if (!alg_) return;
+  try {
+    alg_->validate(input, numeric_);
+    if (compare_) alg_->validate(input, *compare_);
+  } catch (const InputError& e) {
+    edit_error_ = e.what();
+    return;
+  }
+  rerun_with_input(input);
+}
+
+void App::rerun_numerics(Numeric numeric, std::optional<Numeric> compare) {
+  if (!alg_) return;
+  if (std::string err = load(*alg_, input_, numeric, compare, true); !err.empty()) edit_error_ = err;
+}
+
+namespace {
+
+Json rational_json(const Rational& r) {
+  if (r.get_den() == 1 && abs(r) < Rational(1L << 53)) return Json(r.get_num().get_si());
+  return Json(num::to_text(r));
+}
+
+}  // namespace
+
+void App::on_drag(const CanvasEvents::Drag& d) {
+  if (!alg_) return;
+  // Snap to eighths so that exact values stay short; fall back to integers when the algorithm
+  // takes integer endpoints (Bresenham) or the number type needs them.
+  for (long den : {8L, 1L}) {
+    Json in = input_;
+    Rational x(mpz_class(std::lround(d.x * double(den))), mpz_class(den)), y(mpz_class(std::lround(d.y * double(den))), mpz_class(den));
+    x.canonicalize(), y.canonicalize();
+    in[d.handle == 0 ? "p0" : "p1"] = Json::array({rational_json(x), rational_json(y)});
+    try {
+      alg_->validate(in, numeric_);
+      if (compare_) alg_->validate(in, *compare_);
+    } catch (const InputError& e) {
+      edit_error_ = e.what();
+      continue;
+    }
+    if (in != input_) rerun_with_input(in);
+    return;
+  }
+}
+
+void App::fill_endpoint_fields() {
+  for (auto& t : endpoint_text_) t.clear();
+  if (!input_.is_object()) return;
+  for (int p = 0; p < 2; ++p) {
+    const Json* pt = input_.contains(p ? "p1" : "p0") ? &input_[p ? "p1" : "p0"] : nullptr;
+    if (!pt || !pt->is_array() || pt->size() != 2) continue;
+    for (int a = 0; a < 2; ++a) {
+      try {
+        endpoint_text_[2 * p + a] = num::to_text(parse_rational((*pt)[a], "p"));
+      } catch (const InputError&) {
+        endpoint_text_[2 * p + a] = (*pt)[a].dump();
+      }
+    }
+  }
+}
+
+void App::set_step(std::size_t step) { step_ = a_ ? std::min(step, a_->last()) : 0; }
+
+void App::jump_and_focus(std::size_t step) {
+  set_step(step);
+  playing_ = false;
+  if (a_ && canvases_[0]) canvases_[0]->focus(*a_, step_, 24.0);
+}
+
+// [SECTION] keys and playback
+
+void App::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || !a_) return;
+  auto pressed = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k)); };
+  if (pressed(ImGuiKey_Space)) playing_ = !playing_, carry_ = 0;
+  if (!io.KeyShift) {  // Shift + arrows pan the canvas
+    if (pressed(ImGuiKey_LeftArrow) && step_ > 0) set_step(step_ - 1), playing_ = false;
+    if (pressed(ImGuiKey_RightArrow)) set_step(step_ + 1), playing_ = false;
+  }
+  if (pressed(ImGuiKey_Home)) set_step(0);
+  if (pressed(ImGuiKey_End)) set_step(a_->last());
+  for (ImWchar ch : io.InputQueueCharacters) {
+    if (ch == '+' || ch == '=') speed_ = std::min<int>(speed_ + 1, int(kSpeeds.size()) - 1);
+    if (ch == '-' || ch == '_') speed_ = std::max(speed_ - 1, 0);
+  }
+}
+
+void App::advance_playback(float dt) {
+  if (!playing_ || !a_) return;
+  carry_ += double(dt) * kSpeeds[speed_];
+  const double whole = std::floor(carry_);
+  carry_ -= whole;
+  set_step(step_ + static_cast<std::size_t>(whole));
+  if (step_ >= a_->last()) playing_ = false;
+}
+
+// [SECTION] frame layout
+
+void App::frame(float dt) {
+  handle_keys();
+  advance_playback(dt);
+  const ImVec2 d = ImGui::GetIO().DisplaySize;
+  // Toolbar on top, timeline at the bottom; canvas with the narration under it on the left; the
+  // listing (as tall as its text, measured last frame) and the state on the right.
+  const float top = 76, bottom = 96;
+  const float right = std::clamp(d.x * 0.37f, 340.f, 560.f), left = d.x - right;
+  const float mid = std::max(d.y - top - bottom, 200.f);
+  const float narration_h = lesson_ ? std::clamp(mid * 0.25f, 110.f, 220.f) : 76.f;
+  const float listing_h = std::min(listing_content_h_, mid * 0.6f);
+  ImGui::PushFont(fonts_.body);
+  draw_toolbar(ImVec2(0, 0), ImVec2(d.x, top));
+  draw_canvases(ImVec2(0, top), ImVec2(left, mid - narration_h));
+  draw_narration(ImVec2(0, top + mid - narration_h), ImVec2(left, narration_h));
+  draw_listing(ImVec2(left, top), ImVec2(right, listing_h));
+  draw_state(ImVec2(left, top + listing_h), ImVec2(right, mid - listing_h));
+  draw_timeline(ImVec2(0, d.y - bottom), ImVec2(d.x, bottom));
+  ImGui::PopFont();
+}
+
+// [SECTION] canvases and the compare strip
+
+void App::draw_canvases(ImVec2 pos, ImVec2 size) {
+  constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+                                      ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoTitleBar |
+                                      ImGuiWindowFlags_NoBackground;  // the canvas covers it: save llvmpipe a fill
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+  ImGui::Begin("Canvas", nullptr, kFixed);
+  if (!error_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, theme::kError);
+    ImGui::TextWrapped("Could not load: %s", error_.c_str());
+    ImGui::PopStyleColor();
+    if (a_ && ImGui::SmallButton("Dismiss")) error_.clear();
+  }
+  if (b_) draw_compare_strip();
+  ImVec2 avail = ImGui::GetContentRegionAvail();
+  if (a_ && canvases_[0]) {
+    const int n = b_ ? 2 : 1;
+    const float w = (avail.x - float(n - 1) * 4) / float(n);
+    const std::string label_a = std::string(numeric_name(numeric_)), label_b = b_ ? std::string(numeric_name(*compare_)) : "";
+    for (int i = 0; i < n; ++i) {
+      if (i) ImGui::SameLine(0, 4);
+      ImGui::PushID(i);
+      if (i) canvases_[1]->follow(*canvases_[0]);
+      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, playing_ && i == 0, n > 1 ? (i ? label_b : label_a).c_str() : ""};
+      const CanvasEvents ev = canvases_[i]->draw(in, ImVec2(w, avail.y));
+      if (ev.jump_to) set_step(*ev.jump_to), playing_ = false;
+      if (ev.drag) on_drag(*ev.drag);
+      if (ev.edit) apply_input(*ev.edit);
+      ImGui::PopID();
+    }
+    if (b_) canvases_[0]->follow(*canvases_[1]);  // a pan on the right canvas moves both
+  } else if (error_.empty()) {
+    ImGui::TextDisabled("Open a lesson or choose an algorithm above.");
+  }
+  ImGui::End();
+  ImGui::PopStyleVar();
+}
+
+void App::draw_compare_strip() {
+  const CompareStats& s = *stats_;
+  const std::string na(numeric_name(numeric_)), nb(numeric_name(*compare_));
+  if (family_ == "raster") {
+    ImGui::Text("%s: %zu steps, %zu pixels    %s: %zu steps, %zu pixels    ", na.c_str(), s.steps_a, s.pixels_a, nb.c_str(), s.steps_b, s.pixels_b);
+    ImGui::SameLine();
+    ImGui::TextColored(s.pixel_mismatches ? theme::kError : theme::kGood, "%zu mismatched pixels", s.pixel_mismatches);
+  } else {  // no pixels to count: compare the two outcomes (hit or miss)
+    auto outcome = [](const TraceModel& m) { return m.result().is_object() && m.result().contains("hit") ? (m.result()["hit"] == true ? "hit" : "miss") : "done"; };
+    const std::string oa = outcome(*a_), ob = outcome(*b_);
+    ImGui::Text("%s: %zu steps, %s    %s: %zu steps, %s    ", na.c_str(), s.steps_a, oa.c_str(), nb.c_str(), s.steps_b, ob.c_str());
+    ImGui::SameLine();
+    ImGui::TextColored(oa != ob ? theme::kError : theme::kGood, oa != ob ? "different outcomes" : "same outcome");
+  }
+  if (s.first_decision_divergence) {
+    if (ImGui::SmallButton("Jump to first divergence")) jump_and_focus(*s.first_decision_divergence);
+    ImGui::SameLine();
+    ImGui::Text("step %zu: line, kind or pixel differ", *s.first_decision_divergence);
+  } else {
+    ImGui::TextColored(theme::kGood, "Same decisions and pixels at every step.");
+  }
+  if (s.first_value_divergence) {
+    ImGui::SameLine(0, 24);
+    if (ImGui::SmallButton("Jump to first value difference")) jump_and_focus(*s.first_value_divergence);
+    ImGui::SameLine();
+    ImGui::Text("step %zu", *s.first_value_divergence);
+  }
+}
+
+}  // namespace sw::vis

@@ -1,0 +1,105 @@
+// The visualizer app: what is open (a lesson or an algorithm with an input and number types), the
+// recorded traces, the timeline position, and the panels that draw it all with the ImGui API only.
+// Both hosts (GLFW window, OSMesa headless) drive the same App; they differ only in the backend.
+//
+// Panels are App members, one file each: panel_toolbar.cpp, panel_timeline.cpp,
+// panel_listing.cpp, panel_state.cpp, panel_narration.cpp; app.cpp holds loading and layout.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+#include "canvas.hpp"
+#include "compare.hpp"
+#include "lesson.hpp"
+#include "theme.hpp"
+#include "trace_model.hpp"
+
+namespace sw::vis {
+
+class App {
+ public:
+  App(TextureHost& textures, theme::Fonts fonts, std::filesystem::path lessons_dir = default_lessons_dir());
+
+  // Loading never throws: on failure it returns false, error() says why, and the app shows it.
+  bool open_lesson(const std::filesystem::path& file);
+  bool open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare = std::nullopt);
+  bool open_first_lesson();
+  const std::string& error() const { return error_; }
+  void show_error(std::string message) { error_ = std::move(message); }
+  bool loaded() const { return a_ != nullptr; }
+
+  // Builds one frame of UI over the whole display (ImGui::GetIO().DisplaySize).
+  void frame(float dt);
+
+  void set_step(std::size_t step);
+  std::size_t step() const { return step_; }
+  std::size_t steps() const { return a_ ? a_->size() : 0; }
+  void set_playing(bool p) { playing_ = p; }
+  // Goes to a step and centres the canvas on it, zoomed in enough to see single pixels.
+  void jump_and_focus(std::size_t step);
+
+  // Test hooks: what the last frame showed.
+  std::uint32_t highlighted_line() const { return highlighted_line_; }
+  const Canvas* canvas(int i) const { return canvases_[i].get(); }
+  const TraceModel* model(int i) const { return (i == 0 ? a_ : b_).get(); }
+  const std::optional<CompareStats>& compare_stats() const { return stats_; }
+
+ private:
+  // Records the run(s); on failure returns the message and leaves the open run as it was.
+  std::string load(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare, bool keep_view);
+  bool rerun_with_input(const Json& input);  // keeps the relative timeline position
+  void apply_input(const Json& input);        // from the edit fields; errors go to edit_error_
+  void rerun_numerics(Numeric numeric, std::optional<Numeric> compare);
+  void on_drag(const CanvasEvents::Drag& d);
+  void fill_endpoint_fields();
+  void handle_keys();
+  void advance_playback(float dt);
+
+  void draw_toolbar(ImVec2 pos, ImVec2 size);
+  void draw_canvases(ImVec2 pos, ImVec2 size);
+  void draw_compare_strip();
+  void draw_timeline(ImVec2 pos, ImVec2 size);
+  void draw_listing(ImVec2 pos, ImVec2 size);
+  void draw_state(ImVec2 pos, ImVec2 size);
+  void draw_narration(ImVec2 pos, ImVec2 size);
+
+  TextureHost* textures_;
+  theme::Fonts fonts_;
+  std::filesystem::path lessons_dir_;
+  std::vector<std::filesystem::path> lessons_;
+  std::string lessons_error_;
+
+  // What is open.
+  std::optional<Lesson> lesson_;
+  const Algorithm* alg_ = nullptr;
+  Json input_;
+  Numeric numeric_ = Numeric::exact;
+  std::optional<Numeric> compare_;
+  std::shared_ptr<const TraceModel> a_, b_;
+  std::optional<CompareStats> stats_;
+  std::array<std::unique_ptr<Canvas>, 2> canvases_;
+  std::string family_;
+
+  // Timeline.
+  std::size_t step_ = 0;
+  bool playing_ = false;
+  int speed_ = 3;        // index into kSpeeds
+  double carry_ = 0;     // fractional steps of playback
+  int seek_kind_ = int(StepKind::plot);
+
+  // Messages and edit fields.
+  std::string error_, edit_error_;
+  std::array<std::string, 4> endpoint_text_;
+  std::string json_text_;
+  std::uint32_t highlighted_line_ = 0;
+  std::size_t listing_scrolled_to_ = ~std::size_t(0);
+  float listing_content_h_ = 300;  // the listing's full height, measured each frame
+};
+
+// Playback speeds in steps per second, chosen with +/-.
+inline constexpr std::array<double, 14> kSpeeds = {1, 2, 4, 8, 15, 30, 60, 120, 250, 500, 1000, 5000, 25000, 100000};
+
+}  // namespace sw::vis

@@ -1,0 +1,53 @@
+// The canvas behind a small interface, one kind per algorithm family: "raster" draws the pixel
+// grid (pixel_canvas.cpp); other families get a placeholder until their view exists (a 3D view
+// for "ray" slots in here through make_canvas).
+#pragma once
+#include <array>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include "texture_host.hpp"
+#include "trace_model.hpp"
+
+namespace sw::vis {
+
+// What the user did on the canvas this frame; the app acts on it.
+struct CanvasEvents {
+  std::optional<std::size_t> jump_to;  // clicked a plotted pixel: go to its step
+  struct Drag {
+    int handle;       // 0: p0, 1: p1
+    double x, y;      // world position under the mouse
+    bool released;    // the drag ended this frame
+  };
+  std::optional<Drag> drag;
+  std::optional<Json> edit;  // the input as edited on the canvas (the 3D view's ray handles): re-run with it
+};
+
+struct CanvasInput {
+  std::shared_ptr<const TraceModel> model;
+  std::size_t step = 0;
+  bool editable = false;   // endpoints may be dragged
+  bool keys = false;       // this canvas takes the pan/zoom keys
+  bool follow = false;     // keep the current step in view (while playing)
+  const char* label = "";  // drawn in the corner (e.g. the number type)
+};
+
+class Canvas {
+ public:
+  virtual ~Canvas() = default;
+  // Draws into the current window at the cursor, filling `size`.
+  virtual CanvasEvents draw(const CanvasInput& in, ImVec2 size) = 0;
+  // Frames the whole trace on the next draw.
+  virtual void fit() = 0;
+  // Centres the view on the geometry of `step`, zooming in to at least `min_scale` px per cell.
+  virtual void focus(const TraceModel&, std::size_t, double) {}
+  // Shares pan and zoom with another canvas of the same kind (the compare view).
+  virtual void follow(const Canvas& other) = 0;
+  // Test hook: the screen rectangle (x0, y0, x1, y1) of a cell in the last drawn frame, if the
+  // cell lies wholly inside the canvas.
+  virtual std::optional<std::array<float, 4>> cell_rect(Pixel) const { return std::nullopt; }
+};
+
+std::unique_ptr<Canvas> make_canvas(std::string_view family, TextureHost& textures);
+
+}  // namespace sw::vis

@@ -1,0 +1,69 @@
+#include "compare.hpp"
+#include <algorithm>
+
+namespace sw::vis {
+namespace {
+
+bool same_decisions(const TraceView& a, const TraceView& b, std::size_t s) {
+  const StepRecord &x = a.at(s), &y = b.at(s);
+  if (x.line != y.line || x.kind != y.kind) return false;
+  if (x.var_end - x.var_begin != y.var_end - y.var_begin || x.geo_end - x.geo_begin != y.geo_end - y.geo_begin) return false;
+  for (std::uint32_t k = 0; k < x.var_end - x.var_begin; ++k) {
+    const VarRecord &u = a.var_at(x.var_begin + k), &v = b.var_at(y.var_begin + k);
+    if (u.is_int != v.is_int) return false;
+    if (u.is_int && a.int_value(u.slot) != b.int_value(v.slot)) return false;
+  }
+  for (std::uint32_t k = 0; k < x.geo_end - x.geo_begin; ++k) {
+    const GeoRecord &g = a.geo_at(x.geo_begin + k), &h = b.geo_at(y.geo_begin + k);
+    if (g.kind != h.kind) return false;
+    if (g.kind == GeoKind::pixel && (a.int_value(g.slot) != b.int_value(h.slot) || a.int_value(g.slot + 1) != b.int_value(h.slot + 1)))
+      return false;
+  }
+  return true;
+}
+
+bool same_values(const TraceView& a, const TraceView& b, std::size_t s) {
+  const StepRecord &x = a.at(s), &y = b.at(s);
+  for (std::uint32_t k = 0; k < x.var_end - x.var_begin; ++k) {
+    const VarRecord &u = a.var_at(x.var_begin + k), &v = b.var_at(y.var_begin + k);
+    if (!u.is_int && a.num_double(u.slot) != b.num_double(v.slot)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CompareStats compare_traces(const TraceModel& a, const TraceModel& b) {
+  CompareStats st;
+  st.steps_a = a.size(), st.steps_b = b.size();
+  st.pixels_a = a.plots().size(), st.pixels_b = b.plots().size();
+  const std::size_t common = std::min(a.size(), b.size());
+  for (std::size_t s = 0; s < common; ++s) {
+    const bool decisions = same_decisions(a.trace(), b.trace(), s);
+    if (!st.first_value_divergence && (!decisions || !same_values(a.trace(), b.trace(), s))) st.first_value_divergence = s;
+    if (!decisions) {
+      st.first_decision_divergence = s;
+      break;
+    }
+  }
+  if (!st.first_decision_divergence && a.size() != b.size()) st.first_decision_divergence = common;
+  if (!st.first_value_divergence) st.first_value_divergence = st.first_decision_divergence;
+  // Symmetric difference of the plotted cell multisets.
+  auto cells = [](const TraceModel& m) {
+    std::vector<Pixel> c;
+    c.reserve(m.plots().size());
+    for (const PlotEvent& e : m.plots()) c.push_back(e.cell);
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  const auto ca = cells(a), cb = cells(b);
+  std::size_t i = 0, j = 0;
+  while (i < ca.size() || j < cb.size()) {
+    if (j == cb.size() || (i < ca.size() && ca[i] < cb[j])) ++st.pixel_mismatches, ++i;
+    else if (i == ca.size() || cb[j] < ca[i]) ++st.pixel_mismatches, ++j;
+    else ++i, ++j;
+  }
+  return st;
+}
+
+}  // namespace sw::vis

@@ -1,0 +1,108 @@
+// The state panel: every variable seen so far, at the current step, exactly (rationals as p/q).
+// Changed since the previous step: amber. Set again with the same value: blue. In compare mode,
+// one column per number type and their difference, which shows a float run drifting.
+#include <cmath>
+#include <cstdio>
+#include "app.hpp"
+
+namespace sw::vis {
+namespace {
+
+const VarState* find_var(const std::vector<VarState>& vs, std::string_view name) {
+  for (const VarState& v : vs)
+    if (v.name == name) return &v;
+  return nullptr;
+}
+
+ImVec4 var_colour(const VarState& v) {
+  return v.changed ? theme::kChanged : v.set_here ? theme::kSetSame : ImVec4(0.85f, 0.86f, 0.89f, 1);
+}
+
+// The exact text, and for a fraction its decimal approximation too.
+void value_cell(const VarState& v) {
+  ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
+  if (!v.is_int && v.text.find('/') != std::string::npos) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("= %.9g", v.value);
+  }
+}
+
+// Exact irrational results (a sphere's t, rounded to 128 bits) run to 80 digits and would squeeze
+// the compare columns: show those as a decimal, the exact text on hover.
+void compare_cell(const VarState& v) {
+  if (v.text.size() <= 24) return ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
+  ImGui::TextColored(var_colour(v), "~%.15g", v.value);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.text.c_str());
+}
+
+}  // namespace
+
+void App::draw_state(ImVec2 pos, ImVec2 size) {
+  place_next(pos, size);
+  ImGui::Begin("State", nullptr, kPanelFlags);
+  if (!a_) {
+    ImGui::End();
+    return;
+  }
+  const auto sa = a_->state_at(step_);
+  ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(4, 1));
+  ImGui::TextColored(theme::kChanged, "changed");
+  ImGui::SameLine();
+  ImGui::TextColored(theme::kSetSame, "set, same value");
+  ImGui::SameLine();
+  ImGui::TextDisabled("earlier");
+  constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp |
+                                     ImGuiTableFlags_ScrollY;
+  if (!b_) {
+    if (ImGui::BeginTable("vars", 2, kTable)) {
+      ImGui::TableSetupScrollFreeze(0, 1);
+      ImGui::TableSetupColumn("variable", ImGuiTableColumnFlags_WidthFixed, 96);
+      ImGui::TableSetupColumn(("value (" + std::string(numeric_name(numeric_)) + ")").c_str());
+      ImGui::TableHeadersRow();
+      for (const VarState& v : sa) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored(var_colour(v), "%.*s", int(v.name.size()), v.name.data());
+        ImGui::TableNextColumn();
+        value_cell(v);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::PopStyleVar();
+    ImGui::End();
+    return;
+  }
+  const std::size_t step_b = std::min(step_, b_->last());
+  const auto sb = b_->state_at(step_b);
+  if (step_b != step_) ImGui::TextColored(theme::kError, "%s has only %zu steps", std::string(numeric_name(*compare_)).c_str(), b_->size());
+  if (ImGui::BeginTable("vars2", 4, kTable)) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    ImGui::TableSetupColumn("variable", ImGuiTableColumnFlags_WidthFixed, 70);
+    ImGui::TableSetupColumn(std::string(numeric_name(numeric_)).c_str());
+    ImGui::TableSetupColumn(std::string(numeric_name(*compare_)).c_str());
+    ImGui::TableSetupColumn("|difference|", ImGuiTableColumnFlags_WidthFixed, 90);
+    ImGui::TableHeadersRow();
+    for (std::string_view name : a_->var_names()) {
+      const VarState *x = find_var(sa, name), *y = find_var(sb, name);
+      if (!x && !y) continue;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name.data(), name.data() + name.size());
+      ImGui::TableNextColumn();
+      if (x) compare_cell(*x);
+      ImGui::TableNextColumn();
+      if (y) compare_cell(*y);
+      ImGui::TableNextColumn();
+      if (x && y) {
+        const double diff = std::fabs(x->value - y->value);
+        if (diff == 0) ImGui::TextDisabled("0");
+        else ImGui::TextColored(theme::kError, "%.3g", diff);
+      }
+    }
+    ImGui::EndTable();
+  }
+  ImGui::PopStyleVar();
+  ImGui::End();
+}
+
+}  // namespace sw::vis

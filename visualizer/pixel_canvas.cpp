@@ -1,0 +1,278 @@
+// [SECTION] view transforms
+// [SECTION] input: zoom, pan, drag, hover, click
+// [SECTION] drawing: texture, grid, geometry
+// [SECTION] the placeholder canvas and make_canvas
+#include "pixel_canvas.hpp"
+#include "ray_canvas.hpp"
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include "theme.hpp"
+
+namespace sw::vis {
+
+// [SECTION] view transforms
+
+ImVec2 PixelCanvas::to_screen(double x, double y) const {
+  return ImVec2(float(origin_.x + size_.x * 0.5 + (x - cx_) * scale_), float(origin_.y + size_.y * 0.5 - (y - cy_) * scale_));
+}
+
+std::array<double, 2> PixelCanvas::to_world(ImVec2 p) const {
+  return {cx_ + (p.x - origin_.x - size_.x * 0.5) / scale_, cy_ - (p.y - origin_.y - size_.y * 0.5) / scale_};
+}
+
+WorldRect PixelCanvas::visible() const {
+  const auto a = to_world(origin_), b = to_world(ImVec2(origin_.x + size_.x, origin_.y + size_.y));
+  return {a[0], b[1], b[0], a[1]};
+}
+
+void PixelCanvas::do_fit(const TraceModel& m) {
+  WorldRect b = m.bounds();
+  if (b.empty()) b = {-4, -4, 4, 4};
+  const double w = std::max(b.x1 - b.x0, 4.0), h = std::max(b.y1 - b.y0, 4.0);
+  cx_ = (b.x0 + b.x1) / 2, cy_ = (b.y0 + b.y1) / 2;
+  scale_ = std::min(size_.x / (w * 1.15), size_.y / (h * 1.15));
+  scale_ = std::clamp(scale_, 1e-6, 96.0);
+}
+
+void PixelCanvas::follow(const Canvas& other) {
+  if (const auto* o = dynamic_cast<const PixelCanvas*>(&other)) {
+    cx_ = o->cx_, cy_ = o->cy_, scale_ = o->scale_;
+    fit_pending_ = false;
+  }
+}
+
+void PixelCanvas::focus(const TraceModel& m, std::size_t step, double min_scale) {
+  std::optional<std::array<double, 2>> at = m.point_at(step);
+  if (auto px = m.pixel_at(step)) at = std::array<double, 2>{double(px->x), double(px->y)};
+  if (!at) return;
+  cx_ = (*at)[0], cy_ = (*at)[1];
+  scale_ = std::max(scale_, min_scale);
+  fit_pending_ = false;
+}
+
+std::optional<std::array<float, 4>> PixelCanvas::cell_rect(Pixel c) const {
+  const ImVec2 a = to_screen(double(c.x) - 0.5, double(c.y) + 0.5), b = to_screen(double(c.x) + 0.5, double(c.y) - 0.5);
+  if (a.x < origin_.x || a.y < origin_.y || b.x > origin_.x + size_.x || b.y > origin_.y + size_.y) return std::nullopt;
+  return std::array<float, 4>{a.x, a.y, b.x, b.y};
+}
+
+// [SECTION] input: zoom, pan, drag, hover, click
+
+void PixelCanvas::handle_view_input(bool hovered, bool keys) {
+  const ImGuiIO& io = ImGui::GetIO();
+  auto zoom_at = [&](ImVec2 anchor, double factor) {
+    const auto before = to_world(anchor);
+    scale_ = std::clamp(scale_ * factor, 1e-6, 400.0);
+    const auto after = to_world(anchor);
+    cx_ += before[0] - after[0], cy_ += before[1] - after[1];
+  };
+  if (hovered && io.MouseWheel != 0) zoom_at(io.MousePos, std::pow(1.2, io.MouseWheel));
+  if (!keys || io.WantTextInput) return;
+  const ImVec2 centre(origin_.x + size_.x / 2, origin_.y + size_.y / 2);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp))) zoom_at(centre, 1.25);
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown))) zoom_at(centre, 1 / 1.25);
+  if (io.KeyShift) {  // Shift + arrows pan by a tenth of the view
+    const double step = 0.1 * std::min(size_.x, size_.y) / scale_;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) cx_ -= step;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) cx_ += step;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) cy_ += step;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_DownArrow))) cy_ -= step;
+  }
+  for (ImWchar ch : io.InputQueueCharacters)
+    if (ch == 'f' || ch == 'F') fit_pending_ = true;
+}
+
+CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
+  CanvasEvents ev;
+  size.x = std::max(size.x, 16.f), size.y = std::max(size.y, 16.f);
+  origin_ = ImGui::GetCursorScreenPos();
+  size_ = size;
+  ImGui::InvisibleButton("##canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
+  if (in.model && fit_pending_) do_fit(*in.model), fit_pending_ = false;
+  handle_view_input(hovered, in.keys);
+  if (in.follow && in.model && !active) {  // playing: pan when the current point leaves the view
+    std::optional<std::array<double, 2>> at = in.model->point_at(in.step);
+    if (auto px = in.model->pixel_at(in.step)) at = std::array<double, 2>{double(px->x), double(px->y)};
+    const WorldRect v = visible();
+    const double mx = (v.x1 - v.x0) * 0.05, my = (v.y1 - v.y0) * 0.05;
+    if (at && ((*at)[0] < v.x0 + mx || (*at)[0] > v.x1 - mx || (*at)[1] < v.y0 + my || (*at)[1] > v.y1 - my))
+      cx_ = (*at)[0], cy_ = (*at)[1];
+  }
+  const ImGuiIO& io = ImGui::GetIO();
+  const auto seg = in.model ? in.model->segment() : std::nullopt;
+
+  // A press on an endpoint handle drags it; anywhere else it pans.
+  if (ImGui::IsItemActivated()) {
+    moved_ = false;
+    dragging_ = -1;
+    if (in.editable && seg && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+      for (int h = 0; h < 2; ++h) {
+        const ImVec2 p = to_screen((*seg)[2 * h], (*seg)[2 * h + 1]);
+        const float dx = io.MousePos.x - p.x, dy = io.MousePos.y - p.y;
+        if (dx * dx + dy * dy <= 10.f * 10.f) dragging_ = h;
+      }
+  }
+  if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+    moved_ = true;
+    if (dragging_ >= 0) {
+      const auto w = to_world(io.MousePos);
+      ev.drag = CanvasEvents::Drag{dragging_, w[0], w[1], false};
+    } else {
+      cx_ -= io.MouseDelta.x / scale_, cy_ += io.MouseDelta.y / scale_;
+    }
+  }
+  if (ImGui::IsItemDeactivated()) {
+    if (dragging_ >= 0 && moved_) {
+      const auto w = to_world(io.MousePos);
+      ev.drag = CanvasEvents::Drag{dragging_, w[0], w[1], true};
+    } else if (!moved_ && in.model) {
+      const auto w = to_world(io.MousePos);
+      const std::uint32_t s = in.model->step_of_cell({std::int64_t(std::floor(w[0] + 0.5)), std::int64_t(std::floor(w[1] + 0.5))});
+      if (s != kNoStep) ev.jump_to = s;
+    }
+    dragging_ = -1;
+  }
+
+  // [SECTION] drawing: texture, grid, geometry
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(origin_, ImVec2(origin_.x + size.x, origin_.y + size.y), true);
+  dl->AddRectFilled(origin_, ImVec2(origin_.x + size.x, origin_.y + size.y), theme::kCanvasBg);
+  if (in.model && layer_.prepare(in.model, visible(), scale_, in.step)) {
+    const WorldRect w = layer_.window().world();
+    dl->AddImage(layer_.texture(), to_screen(w.x0, w.y1), to_screen(w.x1, w.y0));
+  }
+  draw_grid(dl);
+  if (in.model) draw_geometry(dl, in);
+
+  // Hover: which cell, and which step plotted it.
+  if (hovered && in.model && dragging_ < 0) {
+    const auto w = to_world(io.MousePos);
+    const Pixel c{std::int64_t(std::floor(w[0] + 0.5)), std::int64_t(std::floor(w[1] + 0.5))};
+    if (const auto r = cell_rect(c); r && scale_ >= 4) {
+      dl->AddRect(ImVec2((*r)[0], (*r)[1]), ImVec2((*r)[2], (*r)[3]), theme::kHover, 0, 0, 1.5f);
+    }
+    const std::uint32_t s = in.model->step_of_cell(c);
+    ImGui::BeginTooltip();
+    ImGui::Text("cell (%lld, %lld)   at x = %.3f, y = %.3f", (long long)c.x, (long long)c.y, w[0], w[1]);
+    if (s == kNoStep) ImGui::TextColored(theme::kDim, "never plotted");
+    else ImGui::Text("plotted at step %u%s - click to jump there", s, s > in.step ? " (later)" : "");
+    ImGui::EndTooltip();
+  }
+  if (in.label && *in.label) {
+    const ImVec2 ts = ImGui::CalcTextSize(in.label);
+    const ImVec2 p(origin_.x + size.x - ts.x - 10, origin_.y + 6);
+    dl->AddRectFilled(ImVec2(p.x - 4, p.y - 2), ImVec2(p.x + ts.x + 4, p.y + ts.y + 2), IM_COL32(0, 0, 0, 170), 3);
+    dl->AddText(p, IM_COL32(255, 255, 255, 255), in.label);
+  }
+  dl->PopClipRect();
+  return ev;
+}
+
+void PixelCanvas::draw_grid(ImDrawList* dl) const {
+  const WorldRect v = visible();
+  const ImVec2 lo(origin_.x, origin_.y), hi(origin_.x + size_.x, origin_.y + size_.y);
+  if (scale_ >= 6) {
+    // Cell edges lie at half-integers: pixel (i, j) is [i-1/2, i+1/2) x [j-1/2, j+1/2).
+    for (double x = std::floor(v.x0) + 0.5; x <= v.x1; x += 1) {
+      const float sx = to_screen(x, 0).x;
+      dl->AddLine(ImVec2(sx, lo.y), ImVec2(sx, hi.y), theme::kGrid);
+    }
+    for (double y = std::floor(v.y0) + 0.5; y <= v.y1; y += 1) {
+      const float sy = to_screen(0, y).y;
+      dl->AddLine(ImVec2(lo.x, sy), ImVec2(hi.x, sy), theme::kGrid);
+    }
+  }
+  // Pixel centres: the points the DDA samples against.
+  if (scale_ >= 14) {
+    for (double x = std::ceil(v.x0); x <= v.x1; x += 1)
+      for (double y = std::ceil(v.y0); y <= v.y1; y += 1) dl->AddCircleFilled(to_screen(x, y), std::min(2.5f, float(scale_) / 12), theme::kCentre, 6);
+  }
+  // Index labels on translucent strips along the bottom and left edges, every n-th index with n
+  // from 1, 2, 5, 10, 20, ... so that labels never touch.
+  auto widest = [](double a, double b) { return ImGui::CalcTextSize(std::to_string((long long)std::max(std::fabs(a), std::fabs(b)) * -1).c_str()).x; };
+  const float label_w = widest(v.x0, v.x1) + 14, strip_w = widest(v.y0, v.y1) + 10;
+  long long every = 0;
+  for (long long base = 1; !every && base < (1LL << 50); base *= 10)
+    for (long long m : {1, 2, 5})
+      if (!every && double(base * m) * scale_ >= label_w) every = base * m;
+  if (!every) return;
+  dl->AddRectFilled(ImVec2(lo.x, hi.y - 20), hi, IM_COL32(16, 18, 24, 200));
+  dl->AddRectFilled(lo, ImVec2(lo.x + strip_w, hi.y - 20), IM_COL32(16, 18, 24, 200));
+  char buf[24];
+  for (long long i = (long long)std::ceil(v.x0 / double(every)) * every; double(i) <= v.x1; i += every) {
+    const float sx = to_screen(double(i), 0).x;
+    std::snprintf(buf, sizeof buf, "%lld", i);
+    const float w = ImGui::CalcTextSize(buf).x;
+    if (sx - w / 2 > lo.x + strip_w) dl->AddText(ImVec2(sx - w / 2, hi.y - 18), theme::kLabel, buf);
+  }
+  for (long long j = (long long)std::ceil(v.y0 / double(every)) * every; double(j) <= v.y1; j += every) {
+    const float sy = to_screen(0, double(j)).y;
+    std::snprintf(buf, sizeof buf, "%lld", j);
+    if (sy < hi.y - 26) dl->AddText(ImVec2(lo.x + 4, sy - 8), theme::kLabel, buf);
+  }
+}
+
+void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
+  const TraceModel& m = *in.model;
+  if (auto px = m.pixel_at(in.step)) {
+    const ImVec2 a = to_screen(double(px->x) - 0.5, double(px->y) + 0.5), b = to_screen(double(px->x) + 0.5, double(px->y) - 0.5);
+    dl->AddRect(ImVec2(a.x - 1, a.y - 1), ImVec2(b.x + 1, b.y + 1), theme::kCurrentPixel, 0, 0, 2.5f);
+  }
+  if (auto seg = m.segment()) {
+    const ImVec2 a = to_screen((*seg)[0], (*seg)[1]), b = to_screen((*seg)[2], (*seg)[3]);
+    // Zoomed out, the pixels are thinner than the segment: draw it faint so that they show.
+    dl->AddLine(a, b, scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment, scale_ < 4 ? 1.f : 2.f);
+    const ImU32 col[2] = {theme::kHandleP0, theme::kHandleP1};
+    const char* name[2] = {"p0", "p1"};
+    const ImVec2 at[2] = {a, b};
+    for (int h = 0; h < 2; ++h) {
+      dl->AddCircleFilled(at[h], 6.5f, col[h], 16);
+      dl->AddCircle(at[h], 6.5f, IM_COL32(0, 0, 0, 255), 16, 1.5f);
+      if (in.editable && dragging_ == h) dl->AddCircle(at[h], 11.f, col[h], 20, 2.f);
+      dl->AddText(ImVec2(at[h].x + 9, at[h].y - 20), col[h], name[h]);
+    }
+  }
+  if (auto q = m.point_at(in.step)) {
+    const ImVec2 p = to_screen((*q)[0], (*q)[1]);
+    dl->AddCircleFilled(p, 5.f, theme::kQ, 16);
+    dl->AddCircle(p, 5.f, IM_COL32(0, 0, 0, 255), 16, 1.5f);
+    const auto names = m.var_names();  // the DDA's point is q; others stay unlabelled
+    if (std::find(names.begin(), names.end(), "qx") != names.end()) dl->AddText(ImVec2(p.x + 8, p.y + 2), theme::kQ, "q");
+  }
+}
+
+// [SECTION] the placeholder canvas and make_canvas
+
+namespace {
+
+// Families without a view yet still get the listing, state and timeline; the canvas says so.
+class PlaceholderCanvas final : public Canvas {
+ public:
+  explicit PlaceholderCanvas(std::string_view family) : family_(family) {}
+  CanvasEvents draw(const CanvasInput&, ImVec2 size) override {
+    const ImVec2 o = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##canvas", ImVec2(std::max(size.x, 16.f), std::max(size.y, 16.f)));
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), theme::kCanvasBg);
+    const std::string msg = "No canvas for the '" + family_ + "' family yet: the listing, the state and the timeline work as usual.";
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(o.x + 16, o.y + 16), theme::kLabel, msg.c_str(), nullptr, size.x - 32);
+    return {};
+  }
+  void fit() override {}
+  void follow(const Canvas&) override {}
+
+ private:
+  std::string family_;
+};
+
+}  // namespace
+
+std::unique_ptr<Canvas> make_canvas(std::string_view family, TextureHost& textures) {
+  if (family == "raster") return std::make_unique<PixelCanvas>(textures);
+  if (family == "ray") return std::make_unique<RayCanvas>();
+  return std::make_unique<PlaceholderCanvas>(family);
+}
+
+}  // namespace sw::vis

@@ -1,0 +1,23 @@
+// `stepwise render`: frames of the visualizer without a window, through the OSMesa host.
+//   stepwise render (--lesson FILE | --algorithm ALG --input JSON) [--numeric M] [--compare M2]
+//                   [--step N] --out frame.png [--size WxH]
+//   stepwise render ... --gif out.gif [--from N --to M] [--delay ms]
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+namespace sw::vis {
+
+struct RenderOptions {
+  std::string lesson, algorithm, input, numeric, compare, out, gif, size = "1280x800";
+  std::optional<std::size_t> step, from, to;
+  int delay_ms = 250;
+};
+
+// Adds the subcommand; main calls run_render when it was given.
+CLI::App* add_render_command(CLI::App& app, RenderOptions& opts);
+// Returns 0; throws InputError (one line, exit 2 in main) on bad input, writing no partial file.
+int run_render(const RenderOptions& opts);
+
+}  // namespace sw::vis

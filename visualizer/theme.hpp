@@ -1,0 +1,46 @@
+// Colours, fonts and style shared by the panels and both hosts. Constants only: no mutable state.
+#pragma once
+#include <imgui.h>
+
+namespace sw::vis::theme {
+
+inline constexpr ImU32 kCanvasBg = IM_COL32(24, 26, 33, 255);
+inline constexpr ImU32 kGrid = IM_COL32(70, 76, 92, 255);
+inline constexpr ImU32 kGridAxis = IM_COL32(110, 118, 140, 255);
+inline constexpr ImU32 kCentre = IM_COL32(150, 156, 175, 200);
+inline constexpr ImU32 kSegment = IM_COL32(240, 240, 245, 255);
+inline constexpr ImU32 kHandleP0 = IM_COL32(90, 220, 140, 255);
+inline constexpr ImU32 kHandleP1 = IM_COL32(240, 96, 96, 255);
+inline constexpr ImU32 kQ = IM_COL32(255, 225, 70, 255);
+inline constexpr ImU32 kCurrentPixel = IM_COL32(255, 255, 255, 255);
+inline constexpr ImU32 kHover = IM_COL32(255, 255, 255, 120);
+inline constexpr ImU32 kLabel = IM_COL32(170, 176, 195, 255);
+inline const ImVec4 kChanged = ImVec4(1.00f, 0.80f, 0.30f, 1.f);   // changed variables
+inline const ImVec4 kSetSame = ImVec4(0.62f, 0.80f, 1.00f, 1.f);   // set again, same value
+inline const ImVec4 kDim = ImVec4(0.60f, 0.62f, 0.68f, 1.f);
+inline const ImVec4 kError = ImVec4(1.00f, 0.45f, 0.42f, 1.f);
+inline const ImVec4 kGood = ImVec4(0.45f, 0.85f, 0.55f, 1.f);
+inline constexpr ImU32 kLineHighlight = IM_COL32(66, 110, 190, 150);
+
+// Fonts the panels use; the default font when the TTF files are missing.
+struct Fonts {
+  ImFont* body = nullptr;
+  ImFont* mono = nullptr;
+  ImFont* title = nullptr;
+};
+
+// Call once after ImGui::CreateContext and before the backend builds its font texture.
+// `scale` multiplies font sizes and spacing (1 at 1280x800).
+Fonts setup_style(float scale = 1.f);
+
+}  // namespace sw::vis::theme
+
+namespace sw::vis {
+// Panels sit at fixed places computed each frame: no moving, resizing or remembered layout.
+inline constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                                ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+inline void place_next(ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+}
+}  // namespace sw::vis

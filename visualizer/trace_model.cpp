@@ -1,0 +1,141 @@
+#include "trace_model.hpp"
+#include <algorithm>
+#include <cstring>
+
+namespace sw::vis {
+
+void WorldRect::add(double x, double y) {
+  if (empty()) {
+    *this = {x, y, x, y};
+    return;
+  }
+  x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+}
+
+TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Recorded rec)
+    : alg_(&alg), input_(std::move(input)), numeric_(numeric), rec_(std::move(rec)) {
+  bounds_ = {1, 1, 0, 0};  // empty
+  const TraceView& t = *rec_.trace;
+  const std::size_t n = t.size();
+  name_of_var_.resize(n ? t.at(n - 1).var_end : 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    const StepRecord& st = t.at(s);
+    for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
+      const GeoRecord& geo = t.geo_at(g);
+      if (geo.kind == GeoKind::pixel) {
+        const Pixel p{t.int_value(geo.slot), t.int_value(geo.slot + 1)};
+        plots_.push_back({p, static_cast<std::uint32_t>(s)});
+        bounds_.add(double(p.x) - 0.5, double(p.y) - 0.5);
+        bounds_.add(double(p.x) + 0.5, double(p.y) + 0.5);
+      } else if (geo.kind == GeoKind::point2) {
+        bounds_.add(t.geo_double(geo, 0), t.geo_double(geo, 1));
+      } else if (geo.kind == GeoKind::segment2) {
+        const std::array<double, 4> v{t.geo_double(geo, 0), t.geo_double(geo, 1), t.geo_double(geo, 2), t.geo_double(geo, 3)};
+        if (!segment_) segment_ = v;
+        bounds_.add(v[0], v[1]);
+        bounds_.add(v[2], v[3]);
+      }
+    }
+    // Names are string literals; compare contents so that equal names from two sites merge.
+    for (std::uint32_t v = st.var_begin; v < st.var_end; ++v) {
+      const std::string_view name = t.var_at(v).name;
+      auto it = std::find(names_.begin(), names_.end(), name);
+      if (it == names_.end()) {
+        if (names_.size() == 255) throw InputError(std::string(alg.id) + ": more than 255 variable names in one trace");
+        names_.push_back(name);
+        it = names_.end() - 1;
+      }
+      name_of_var_[v] = static_cast<std::uint8_t>(it - names_.begin());
+    }
+  }
+  // Checkpoint c holds, per name, the latest var record among steps [0, c * kCheckpoint).
+  std::vector<std::uint32_t> latest(names_.size(), kNoStep);
+  for (std::size_t s = 0; s <= n; ++s) {
+    if (s % kCheckpoint == 0) checkpoints_.insert(checkpoints_.end(), latest.begin(), latest.end());
+    if (s < n) apply_step(s, latest);
+  }
+  by_cell_ = plots_;
+  std::stable_sort(by_cell_.begin(), by_cell_.end(), [](const PlotEvent& a, const PlotEvent& b) { return a.cell < b.cell; });
+}
+
+void TraceModel::apply_step(std::size_t step, std::vector<std::uint32_t>& latest) const {
+  const StepRecord& st = rec_.trace->at(step);
+  for (std::uint32_t v = st.var_begin; v < st.var_end; ++v) latest[name_of_var_[v]] = v;
+}
+
+std::size_t TraceModel::plots_through(std::size_t step) const {
+  auto it = std::upper_bound(plots_.begin(), plots_.end(), step, [](std::size_t s, const PlotEvent& e) { return s < e.step; });
+  return static_cast<std::size_t>(it - plots_.begin());
+}
+
+std::uint32_t TraceModel::step_of_cell(Pixel c) const {
+  auto it = std::lower_bound(by_cell_.begin(), by_cell_.end(), c, [](const PlotEvent& e, const Pixel& p) { return e.cell < p; });
+  return it != by_cell_.end() && it->cell == c ? it->step : kNoStep;
+}
+
+std::optional<std::array<double, 2>> TraceModel::point_at(std::size_t step) const {
+  const TraceView& t = *rec_.trace;
+  if (!size()) return std::nullopt;
+  step = std::min(step, last());
+  for (std::size_t k = 0; k <= 64 && k <= step; ++k) {
+    const StepRecord& st = t.at(step - k);
+    for (std::uint32_t g = st.geo_end; g-- > st.geo_begin;) {
+      const GeoRecord& geo = t.geo_at(g);
+      if (geo.kind == GeoKind::point2) return std::array<double, 2>{t.geo_double(geo, 0), t.geo_double(geo, 1)};
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Pixel> TraceModel::pixel_at(std::size_t step) const {
+  if (step >= size()) return std::nullopt;
+  const TraceView& t = *rec_.trace;
+  const StepRecord& st = t.at(step);
+  for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
+    const GeoRecord& geo = t.geo_at(g);
+    if (geo.kind == GeoKind::pixel) return Pixel{t.int_value(geo.slot), t.int_value(geo.slot + 1)};
+  }
+  return std::nullopt;
+}
+
+std::vector<VarState> TraceModel::state_at(std::size_t step) const {
+  std::vector<VarState> out;
+  if (!size()) return out;
+  step = std::min(step, last());
+  const std::size_t c = step / kCheckpoint;
+  std::vector<std::uint32_t> before(checkpoints_.begin() + c * names_.size(), checkpoints_.begin() + (c + 1) * names_.size());
+  for (std::size_t s = c * kCheckpoint; s < step; ++s) apply_step(s, before);
+  std::vector<std::uint32_t> now = before;
+  apply_step(step, now);
+  const TraceView& t = *rec_.trace;
+  const StepRecord& st = t.at(step);
+  for (std::size_t k = 0; k < names_.size(); ++k) {
+    if (now[k] == kNoStep) continue;
+    const VarRecord& v = t.var_at(now[k]);
+    VarState vs{names_[k], t.value_text(v), t.value_double(v), v.is_int, now[k] >= st.var_begin && now[k] < st.var_end, false};
+    vs.changed = before[k] == kNoStep || (vs.set_here && t.value_text(t.var_at(before[k])) != vs.text);
+    out.push_back(std::move(vs));
+  }
+  return out;
+}
+
+std::optional<std::size_t> TraceModel::find_kind(std::size_t from, StepKind kind, bool forward) const {
+  const TraceView& t = *rec_.trace;
+  if (forward) {
+    for (std::size_t s = from + 1; s < size(); ++s)
+      if (t.at(s).kind == kind) return s;
+  } else {
+    for (std::size_t s = std::min(from, size()); s-- > 0;)
+      if (t.at(s).kind == kind) return s;
+  }
+  return std::nullopt;
+}
+
+std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric) {
+  alg.validate(input, numeric);
+  Recorded rec = alg.record(input, numeric);
+  if (!rec.trace || rec.trace->size() == 0) throw InputError(std::string(alg.id) + ": the run recorded no steps");
+  return std::make_shared<const TraceModel>(alg, input, numeric, std::move(rec));
+}
+
+}  // namespace sw::vis

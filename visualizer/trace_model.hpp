@@ -1,0 +1,93 @@
+// TraceModel: one recorded run plus the indexes the panels need to stay fluid at 10^6 steps:
+// the plotted pixels in plot order (with the step that plotted each), a cell -> first-step lookup,
+// and checkpoints of the variable state so that any step's state is a short scan away.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+#include "catalog.hpp"
+
+namespace sw::vis {
+
+struct PlotEvent {
+  Pixel cell;
+  std::uint32_t step;
+};
+
+struct WorldRect {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return !(x1 >= x0 && y1 >= y0); }
+  void add(double x, double y);
+};
+
+// One named variable as the state panel shows it at a step.
+struct VarState {
+  std::string_view name;
+  std::string text;      // lossless: "p/q" for exact values
+  double value = 0;
+  bool is_int = false;
+  bool set_here = false;  // recorded by this very step
+  bool changed = false;   // differs from its value before this step (or new)
+};
+
+inline constexpr std::uint32_t kNoStep = 0xffffffffu;
+
+class TraceModel {
+ public:
+  TraceModel(const Algorithm& alg, Json input, Numeric numeric, Recorded rec);
+
+  const Algorithm& algorithm() const { return *alg_; }
+  const Json& input() const { return input_; }
+  Numeric numeric() const { return numeric_; }
+  const TraceView& trace() const { return *rec_.trace; }
+  const Json& result() const { return rec_.result; }
+  std::size_t size() const { return rec_.trace->size(); }
+  std::size_t last() const { return size() ? size() - 1 : 0; }
+
+  std::span<const PlotEvent> plots() const { return plots_; }
+  // How many plot events happened at steps <= step.
+  std::size_t plots_through(std::size_t step) const;
+  // The step that first plotted this cell, or kNoStep.
+  std::uint32_t step_of_cell(Pixel c) const;
+  // Cells and continuous geometry of the whole trace.
+  const WorldRect& bounds() const { return bounds_; }
+
+  // The first segment in the trace (the input segment for lines), as x0 y0 x1 y1.
+  std::optional<std::array<double, 4>> segment() const { return segment_; }
+  // The latest 2D point at or before `step` (the q of a DDA), searching back a bounded way.
+  std::optional<std::array<double, 2>> point_at(std::size_t step) const;
+  // The pixel geometry carried by `step`, if any.
+  std::optional<Pixel> pixel_at(std::size_t step) const;
+
+  // Every variable seen up to `step` (in first-appearance order) with its latest value.
+  std::vector<VarState> state_at(std::size_t step) const;
+  std::span<const std::string_view> var_names() const { return names_; }
+
+  // First step > from (or < from, backward) of the given kind; nullopt if none.
+  std::optional<std::size_t> find_kind(std::size_t from, StepKind kind, bool forward) const;
+
+ private:
+  static constexpr std::size_t kCheckpoint = 256;
+  void apply_step(std::size_t step, std::vector<std::uint32_t>& latest) const;
+
+  const Algorithm* alg_;
+  Json input_;
+  Numeric numeric_;
+  Recorded rec_;
+  std::vector<PlotEvent> plots_;
+  std::vector<PlotEvent> by_cell_;  // sorted by cell, for hover lookups
+  WorldRect bounds_;
+  std::optional<std::array<double, 4>> segment_;
+  std::vector<std::string_view> names_;
+  std::vector<std::uint8_t> name_of_var_;        // var record -> index into names_
+  std::vector<std::uint32_t> checkpoints_;       // names_.size() entries per checkpoint
+};
+
+// Records alg on input in numeric mode; throws InputError naming the problem.
+std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric);
+
+}  // namespace sw::vis
