@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include "catalog.hpp"
 #include "core/jsonl_probe.hpp"
 #include "core/probe.hpp"
 #include "raster/bresenham_line.hpp"
@@ -147,3 +148,17 @@ BENCHMARK_TEMPLATE(BM_dda_recorder, Rational)->Arg(0)->Arg(1);
 BENCHMARK_TEMPLATE(BM_dda_jsonl, double);
 BENCHMARK_TEMPLATE(BM_dda_jsonl, Rational);
 BENCHMARK_MAIN();
+
+// What the app pays to (re-)record a 10^6-step trace through the catalog: recorder + result.
+static void BM_catalog_record_1M_steps(benchmark::State& state) {
+  const sw::Algorithm& alg = sw::find_algorithm("dda-line");
+  const sw::Json input = sw::Json::parse(R"({"p0":[0.25,0.5],"p1":[499999.75,123456.5]})");
+  std::size_t steps = 0;
+  for (auto _ : state) {
+    sw::Recorded rec = alg.record(input, sw::Numeric::f64);
+    steps += rec.trace->size();
+  }
+  state.counters["steps"] = static_cast<double>(steps) / static_cast<double>(state.iterations());
+  state.counters["ns_per_step"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_catalog_record_1M_steps)->Unit(benchmark::kMillisecond);

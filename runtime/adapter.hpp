@@ -15,6 +15,8 @@
 // Optionally: static void write_members(const Output&, std::ostream&) writes the result object's
 //             members without braces, for large results (else to_json is used);
 //             static double error(const Output& got, const Output& exact), reported as max;
+//             static std::size_t estimate_steps(const Input&): an upper estimate the recorder
+//             reserves (reserved memory costs nothing until touched; regrowth copies it all);
 //             using Filtered = <number type for filtered mode> (default Interval). It must throw
 //             Uncertain when it cannot decide, and have a NumericOf specialization = filtered.
 #pragma once
@@ -164,8 +166,10 @@ template <class Spec> Algorithm make_algorithm() {
   a.record = [=](const Json& j, Numeric n) {
     Recorded rec;
     bool fb;
-    auto out = compute_mode<Spec>(Spec::parse(j, n), n, [&](auto t, auto&& compute) {
+    const typename Spec::Input in = Spec::parse(j, n);
+    auto out = compute_mode<Spec>(in, n, [&](auto t, auto&& compute) {
       auto r = std::make_unique<Recorder<typename decltype(t)::type>>();
+      if constexpr (requires { Spec::estimate_steps(in); }) r->reserve(std::min<std::size_t>(Spec::estimate_steps(in), std::size_t{1} << 27));
       auto o = compute(*r);
       rec.trace = std::move(r);
       return o;

@@ -69,6 +69,11 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
   static Input parse(const Json& j, Numeric n) { return parse_segment(j, n, IntegerEndpoints); }
   template <class Num> static std::array<Vec2<Num>, 2> prepare(const Input& in) { return {to_num<Num>(in.p0), to_num<Num>(in.p1)}; }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  // Each algorithm takes at most three steps per pixel it passes, plus its set-up.
+  static std::size_t estimate_steps(const Input& in) {
+    const Rational span = abs(in.p1.x - in.p0.x) + abs(in.p1.y - in.p0.y);
+    return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 16;
+  }
   static std::vector<BenchSet<Input>> bench_sets() { return segment_bench_sets(IntegerEndpoints); }
   // Result members written straight to the stream: a long line's result is held once, as pixels.
   static void pixels_members(const char* key, const Output& o, std::ostream& os) {

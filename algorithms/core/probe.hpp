@@ -122,12 +122,14 @@ template <class Num> class Recorder final : public TraceView {
     ints_.clear();
     nums_.clear();
   }
+  // Room for about `steps` steps of up to 4 variables and 2 geometry items each. Pages that are
+  // never written are never faulted in, so a generous reserve is free; regrowth is not.
   void reserve(std::size_t steps) {
     steps_.reserve(steps);
-    vars_.reserve(steps * 2);
-    nums_.reserve(steps * 2);
-    ints_.reserve(steps * 2);
-    geos_.reserve(steps);
+    vars_.reserve(steps * 4);
+    nums_.reserve(steps * 4);
+    ints_.reserve(steps * 4);
+    geos_.reserve(steps * 2);
   }
 
  private:
