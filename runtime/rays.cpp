@@ -215,11 +215,14 @@ std::vector<BenchSet<RayInput>> bench_sets_for(Prim p) {
   return {random, hard};
 }
 
+// The filtered number types; Bounded for the variants without static bounds.
+template <class Num> constexpr bool filter_num = std::is_same_v<Num, Static> || std::is_same_v<Num, Bounded>;
+
 template <class AlgoT, Prim P> struct RaySpec {
   using Algo = AlgoT;
   using Input = RayInput;
   using Output = RayOutput;
-  using Filtered = Bounded;
+  using Filtered = Static;  // per-decision static filter (docs/accuracy-rays.md)
   static constexpr std::string_view family = "ray";
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static Input parse(const Json& j, Numeric) { return parse_input(j, P); }
@@ -227,7 +230,7 @@ template <class AlgoT, Prim P> struct RaySpec {
     Prepared<Num> p;
     p.ray.o = to_num<Num>(in.o);
     p.ray.d = to_num<Num>(in.d);
-    if constexpr (std::is_floating_point_v<Num> || std::is_same_v<Num, Bounded>)
+    if constexpr (std::is_floating_point_v<Num> || filter_num<Num>)
       for (int k = 0; k < 3; ++k)
         if (in.d_neg_zero[k]) p.ray.d[k] = Num(-0.0);
     for (int i = 0; i < 3; ++i) p.v[i] = to_num<Num>(in.v[i]);
@@ -282,6 +285,8 @@ template <class AlgoT, auto Fn> struct TriangleSpec : RaySpec<AlgoT, Prim::trian
   }
 };
 template <class AlgoT, auto Fn> struct SphereSpec : RaySpec<AlgoT, Prim::sphere> {
+  // Static bounds exist for the stable variant; the naive ones keep the running bound.
+  using Filtered = std::conditional_t<std::is_same_v<AlgoT, ray::RaySphereStable>, Static, Bounded>;
   static inline const std::string example = R"({"ray":{"o":[0,0,0],"d":[1,0.0001,0]},"sphere":{"c":[100000000,0,0],"r":1}})";
   template <class Num, class Probe> static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
     const auto h = Fn(p, probe);

@@ -28,10 +28,11 @@ struct RayPlane {
 };
 
 template <class Num, class Probe = NoProbe>
-PlaneHit<Num> ray_plane(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) {
+[[gnu::always_inline]] inline PlaneHit<Num> ray_plane(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) {
   using L = RayPlane;
   PlaneHit<Num> out;
-  const Num den = dot(n, r.d);
+  // Static filter bounds (docs/accuracy-rays.md): n, d exact, p - o one rounding.
+  const Num den = certify(dot(n, r.d), [&](double) { return filter::poly(10, filter::mag(n), filter::mag(r.d)); });
   if constexpr (Probe::on)
     probe.step(L::denom, StepKind::decide).num("den", den).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
         .geo(GeoKind::plane, p.x, p.y, p.z, n.x, n.y, n.z);
@@ -39,7 +40,9 @@ PlaneHit<Num> ray_plane(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>&
     if constexpr (Probe::on) probe.step(L::parallel, StepKind::miss);
     return out;
   }
-  const Num t = Num(dot(n, Vec3<Num>(p - r.o)) / den);
+  const Num t = certify(Num(dot(n, Vec3<Num>(p - r.o)) / den), [&](double z) {
+    return filter::quot(z, filter::poly(13, filter::mag(n), filter::mag(Vec3<Num>(p - r.o))), den);
+  });
   if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
   if (!(t > Num(0))) {
     if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
