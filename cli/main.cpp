@@ -15,22 +15,6 @@ using namespace sw;
 
 namespace {
 
-std::string read_file(const std::string& path, const char* what) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(std::string("cannot read ") + what + " file '" + path + "'");
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-// --input takes JSON text or the name of a file holding it.
-Json read_input(const std::string& arg) {
-  const auto first = arg.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && (arg[first] == '{' || arg[first] == '['))
-    return parse_json_text(arg, "input");
-  return parse_json_text(read_file(arg, "input"), "input file '" + arg + "'");
-}
-
 // Writes through `body` to a file atomically, or streams to stdout for "" or "-". Callers
 // validate the input first, so nothing fails half-way through the body.
 template <class F> void write_output(const std::string& path, F&& body) {
@@ -126,7 +110,7 @@ int main(int argc, char** argv) {
     if (*trace) {
       const Algorithm& alg = find_algorithm(alg_id);
       const Numeric n = parse_numeric_for(alg, numeric);
-      const Json input = read_input(input_arg);
+      const Json input = read_input_arg(input_arg);
       alg.validate(input, n);
       write_output(out_path, [&](std::ostream& os) { write_trace(alg, n, input, os); });
       if (!out_path.empty() && out_path != "-") std::cerr << "stepwise: wrote trace to " << out_path << '\n';

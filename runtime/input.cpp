@@ -1,5 +1,7 @@
 #include "input.hpp"
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace sw {
 
@@ -13,6 +15,16 @@ Json parse_json_text(std::string_view text, std::string_view what) {
     why = at == std::string::npos ? why : why.substr(at);
     throw InputError(std::string(what) + ": malformed JSON (" + why + ")");
   }
+}
+
+Json read_input_arg(const std::string& arg) {
+  const auto first = arg.find_first_not_of(" \t\r\n");
+  if (first != std::string::npos && (arg[first] == '{' || arg[first] == '[')) return parse_json_text(arg, "input");
+  std::ifstream f(arg, std::ios::binary);
+  if (!f) throw InputError("cannot read input file '" + arg + "'");
+  std::ostringstream s;
+  s << f.rdbuf();
+  return parse_json_text(s.str(), "input file '" + arg + "'");
 }
 
 static Rational parse_decimal_or_fraction(const std::string& s, const std::string& what) {

@@ -18,6 +18,8 @@ struct InputError : std::runtime_error {
 
 // Parses JSON text; malformed text throws InputError naming `what`.
 Json parse_json_text(std::string_view text, std::string_view what);
+// An --input argument: JSON text (starting with '{' or '[') or the name of a file holding it.
+Json read_input_arg(const std::string& arg);
 // A number (finite) or a string "n", "p/q" or a decimal like "-1.25"; `what` names it in errors.
 Rational parse_rational(const Json& v, const std::string& what);
 // obj[key] must exist; throws "missing field" otherwise.

@@ -31,16 +31,6 @@ struct Options {
   int frames = 0, bench_scrub = 0;
 };
 
-Json input_arg(const std::string& arg) {
-  const auto first = arg.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && (arg[first] == '{' || arg[first] == '[')) return parse_json_text(arg, "input");
-  std::ifstream f(arg, std::ios::binary);
-  if (!f) throw InputError("cannot read input file '" + arg + "'");
-  std::ostringstream s;
-  s << f.rdbuf();
-  return parse_json_text(s.str(), "input file '" + arg + "'");
-}
-
 // Opens what the options ask for; failures show in the app (and are returned for the exit code).
 bool open(App& app, const Options& o) {
   if (o.bench_scrub) {
@@ -55,7 +45,7 @@ bool open(App& app, const Options& o) {
       // --algorithm with its --input (or example); or the lesson's run in other number types.
       const TraceModel* m = app.model(0);
       const Algorithm& alg = !o.algorithm.empty() || !m ? find_algorithm(o.algorithm.empty() ? "dda-line" : o.algorithm) : m->algorithm();
-      const Json input = !o.input.empty() ? input_arg(o.input) : m && &m->algorithm() == &alg ? m->input() : parse_json_text(alg.example, "example");
+      const Json input = !o.input.empty() ? read_input_arg(o.input) : m && &m->algorithm() == &alg ? m->input() : parse_json_text(alg.example, "example");
       const Numeric n = !o.numeric.empty() ? parse_numeric_for(alg, o.numeric) : m && &m->algorithm() == &alg ? m->numeric() : parse_numeric_for(alg, "double");
       std::optional<Numeric> cmp;
       if (!o.compare.empty()) cmp = parse_numeric_for(alg, o.compare);

@@ -9,16 +9,6 @@
 namespace sw::vis {
 namespace {
 
-Json read_input_arg(const std::string& arg) {
-  const auto first = arg.find_first_not_of(" \t\r\n");
-  if (first != std::string::npos && (arg[first] == '{' || arg[first] == '[')) return parse_json_text(arg, "input");
-  std::ifstream f(arg, std::ios::binary);
-  if (!f) throw InputError("cannot read input file '" + arg + "'");
-  std::ostringstream s;
-  s << f.rdbuf();
-  return parse_json_text(s.str(), "input file '" + arg + "'");
-}
-
 std::pair<int, int> parse_size(const std::string& s) {
   const auto x = s.find('x');
   int w = 0, h = 0;
