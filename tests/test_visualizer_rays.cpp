@@ -154,5 +154,21 @@ TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the re
   const auto o_at = ray_canvas(app, 0).screen_of(o);
   REQUIRE(o_at);
   CHECK(near_colour(host, *o_at, kRayOrigin) >= 9);
+
+  // A left-drag on empty space orbits the camera and leaves the input alone.
+  const Json edited = m.input();
+  const double yaw = ray_canvas(app, 0).camera().yaw;
+  const auto& cam = ray_canvas(app, 0).camera();
+  const ImVec2 empty(float(cam.origin[0] + 30), float(cam.origin[1] + cam.size[1] / 2));
+  host.set_mouse(empty, false);
+  host.render(1);
+  host.set_mouse(empty, true);
+  host.render(1);
+  host.set_mouse(ImVec2(empty.x + 40, empty.y), true);
+  host.render(1);
+  host.set_mouse(ImVec2(empty.x + 40, empty.y), false);
+  host.render(1);
+  CHECK(ray_canvas(app, 0).camera().yaw != yaw);
+  CHECK(app.model(0)->input() == edited);
 }
 #endif  // SW_HAVE_VISUALIZER

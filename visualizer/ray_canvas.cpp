@@ -225,13 +225,15 @@ CanvasEvents RayCanvas::draw(const CanvasInput& in, ImVec2 size) {
       sc.bounds(c, r);
       if (orient_pending_) face_ray(sc);
       cam_.frame(c, r);
+      cam_.pan(0, 0.06 * cam_.size[1]);  // a little lower: the step's values are listed top left
       fit_pending_ = false;
     }
     handle_input(in, sc, hovered, ev);
     draw_ray_scene(dl, cam_, sc, *in.model, in.step, in.editable ? dragging_ : -2);
   }
+  const bool can_edit = in.editable && in.model && in.model->input().contains("ray");
   const char* help = "drag: orbit   right/shift-drag: pan   wheel: zoom   F: fit   drag o or o+d: edit the ray";
-  if (ImGui::CalcTextSize(help).x > size.x - 16) help = "drag: orbit   right-drag: pan   wheel: zoom   F: fit";
+  if (!can_edit || ImGui::CalcTextSize(help).x > size.x - 16) help = "drag: orbit   right-drag: pan   wheel: zoom   F: fit";
   dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetFontSize() - 6), theme::kLabel, help);
   if (in.label && *in.label) {
     const ImVec2 ts = ImGui::CalcTextSize(in.label);

@@ -41,10 +41,10 @@ struct Painter {
     return v2(*s);
   }
   // Text on a dark backing so that it reads over lines and fills.
-  void text(ImVec2 at, ImU32 col, const char* s) const {
+  void text(ImVec2 at, ImU32 col, const char* s, bool avoid = true) const {
     const ImVec2 ts = ImGui::CalcTextSize(s);
     at.x = std::min(at.x, float(cam.origin[0] + cam.size[0]) - ts.x - 6);  // keep it inside the canvas
-    for (int tries = 0; tries < 6; ++tries) {
+    for (int tries = 0; avoid && tries < 6; ++tries) {
       bool clear = true;
       for (const ImVec4& r : *placed) clear = clear && (at.x + ts.x + 3 < r.x || at.x - 3 > r.z || at.y + ts.y + 1 < r.y || at.y - 1 > r.w);
       if (clear) break;
@@ -335,6 +335,14 @@ void draw_ray_scene(ImDrawList* dl, const OrbitCamera& cam, const RayScene& sc, 
   std::vector<V3> pts;
   for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g)
     if (t.geo_at(g).kind == GeoKind::point3) pts.push_back({t.geo_double(t.geo_at(g), 0), t.geo_double(t.geo_at(g), 1), t.geo_double(t.geo_at(g), 2)});
+  // Without a ray (sphere-uv) the input point and its normal segment stay on screen for every step.
+  for (std::size_t s = 0; !sc.has_ray && s <= step; ++s)
+    for (std::uint32_t g = t.at(s).geo_begin; g < t.at(s).geo_end; ++g) {
+      const GeoRecord& geo = t.geo_at(g);
+      auto at = [&](int k) { return V3{t.geo_double(geo, k), t.geo_double(geo, k + 1), t.geo_double(geo, k + 2)}; };
+      if (geo.kind == GeoKind::segment3) p.line(at(0), at(3), kClosest, 2.f), p.label(at(3), kClosest, "N");
+      if (geo.kind == GeoKind::point3 && s != step) pts.push_back(at(0));
+    }
   char buf[160];
   if (sc.prim == RayScene::Prim::triangle && pts.size() == 3 && sc.has_ray) {
     for (int i = 0; i < 3; ++i) {
@@ -365,7 +373,7 @@ void draw_ray_scene(ImDrawList* dl, const OrbitCamera& cam, const RayScene& sc, 
   // The step's quantities as text, top left.
   float y = float(cam.origin[1] + 8);
   for (const std::string& s : info) {
-    p.text(ImVec2(float(cam.origin[0] + 10), y), s == "miss" ? kNeg : theme::kLabel, s.c_str());
+    p.text(ImVec2(float(cam.origin[0] + 10), y), s == "miss" ? kNeg : theme::kLabel, s.c_str(), false);
     y += ImGui::GetFontSize() + 4;
   }
 }
