@@ -5,5 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh build-asan -DSW_SANITIZE=ON -DSW_VISUALIZER=OFF -DSW_BENCH=OFF
 cd build-asan
-# Sanitizers slow the exact-rational tests 3-5x: allow more than the usual per-test timeout.
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j"$(nproc)" --timeout 900
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ctest --output-on-failure -j"$(nproc)"
