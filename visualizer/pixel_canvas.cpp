@@ -160,12 +160,7 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
     else ImGui::Text("plotted at step %u%s - click to jump there", s, s > in.step ? " (later)" : "");
     ImGui::EndTooltip();
   }
-  if (in.label && *in.label) {
-    const ImVec2 ts = ImGui::CalcTextSize(in.label);
-    const ImVec2 p(origin_.x + size.x - ts.x - 10, origin_.y + 6);
-    dl->AddRectFilled(ImVec2(p.x - 4, p.y - 2), ImVec2(p.x + ts.x + 4, p.y + ts.y + 2), IM_COL32(0, 0, 0, 170), 3);
-    dl->AddText(p, IM_COL32(255, 255, 255, 255), in.label);
-  }
+  corner_label(dl, origin_, size, in.label);
   dl->PopClipRect();
   return ev;
 }

@@ -235,12 +235,7 @@ CanvasEvents RayCanvas::draw(const CanvasInput& in, ImVec2 size) {
   const char* help = "drag: orbit   right/shift-drag: pan   wheel: zoom   F: fit   drag o or o+d: edit the ray";
   if (!can_edit || ImGui::CalcTextSize(help).x > size.x - 16) help = "drag: orbit   right-drag: pan   wheel: zoom   F: fit";
   dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetFontSize() - 6), theme::kLabel, help);
-  if (in.label && *in.label) {
-    const ImVec2 ts = ImGui::CalcTextSize(in.label);
-    const ImVec2 p(origin.x + size.x - ts.x - 10, origin.y + 6);
-    dl->AddRectFilled(ImVec2(p.x - 4, p.y - 2), ImVec2(p.x + ts.x + 4, p.y + ts.y + 2), IM_COL32(0, 0, 0, 170), 3);
-    dl->AddText(p, IM_COL32(255, 255, 255, 255), in.label);
-  }
+  corner_label(dl, origin, size, in.label);
   dl->PopClipRect();
   return ev;
 }

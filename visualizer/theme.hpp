@@ -43,4 +43,12 @@ inline void place_next(ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
 }
+// A canvas's name badge (e.g. its number type), white on a dark plate in the top-right corner.
+inline void corner_label(ImDrawList* dl, ImVec2 origin, ImVec2 size, const char* label) {
+  if (!label || !*label) return;
+  const ImVec2 ts = ImGui::CalcTextSize(label);
+  const ImVec2 p(origin.x + size.x - ts.x - 10, origin.y + 6);
+  dl->AddRectFilled(ImVec2(p.x - 4, p.y - 2), ImVec2(p.x + ts.x + 4, p.y + ts.y + 2), IM_COL32(0, 0, 0, 170), 3);
+  dl->AddText(p, IM_COL32(255, 255, 255, 255), label);
+}
 }  // namespace sw::vis
