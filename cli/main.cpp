@@ -15,8 +15,8 @@ using namespace sw;
 
 namespace {
 
-// Writes through `body` to a file atomically, or streams to stdout for "" or "-". Callers
-// validate the input first, so nothing fails half-way through the body.
+// Writes through `body` to a file atomically, or streams to stdout for "" or "-". Bodies
+// validate their input before writing anything, so stdout never gets a partial trace.
 template <class F> void write_output(const std::string& path, F&& body) {
   if (path.empty() || path == "-") {
     body(static_cast<std::ostream&>(std::cout));
@@ -111,7 +111,6 @@ int main(int argc, char** argv) {
       const Algorithm& alg = find_algorithm(alg_id);
       const Numeric n = parse_numeric_for(alg, numeric);
       const Json input = read_input_arg(input_arg);
-      alg.validate(input, n);
       write_output(out_path, [&](std::ostream& os) { write_trace(alg, n, input, os); });
       if (!out_path.empty() && out_path != "-") std::cerr << "stepwise: wrote trace to " << out_path << '\n';
       return 0;

@@ -1,6 +1,7 @@
 // Reading inputs: JSON numbers or exact "p/q" strings, checked for finiteness and bounds. Every
 // failure throws InputError with one line that names the problem.
 #pragma once
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,8 @@ Json parse_json_text(std::string_view text, std::string_view what);
 Json read_input_arg(const std::string& arg);
 // A number (finite) or a string "n", "p/q" or a decimal like "-1.25"; `what` names it in errors.
 Rational parse_rational(const Json& v, const std::string& what);
+// obj is an object with exactly these fields: throws "unknown field" or "missing field".
+void only_keys(const Json& obj, std::initializer_list<const char*> keys, const std::string& what);
 // obj[key] must exist; throws "missing field" otherwise.
 const Json& require(const Json& obj, const char* key, const std::string& what);
 Vec2<Rational> parse_point2(const Json& obj, const char* key);

@@ -17,9 +17,7 @@ struct SegmentInput {
 };
 
 SegmentInput parse_segment(const Json& j, Numeric n, bool integer_endpoints) {
-  if (!j.is_object()) throw InputError("input: expected an object {\"p0\":[x,y],\"p1\":[x,y]}");
-  for (auto it = j.begin(); it != j.end(); ++it)
-    if (it.key() != "p0" && it.key() != "p1") throw InputError("input: unknown field \"" + it.key() + "\"");
+  only_keys(j, {"p0", "p1"}, "input");
   SegmentInput in{parse_point2(j, "p0"), parse_point2(j, "p1")};
   for (const auto* p : {&in.p0, &in.p1})
     for (int a = 0; a < 2; ++a) {

@@ -46,16 +46,6 @@ Vec3<Rational> point3(const Json& j, const std::string& what, std::array<bool, 3
   return p;
 }
 
-void only_keys(const Json& j, std::initializer_list<const char*> keys, const std::string& what) {
-  if (!j.is_object()) throw InputError(what + ": expected an object");
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    bool known = false;
-    for (const char* k : keys) known = known || it.key() == k;
-    if (!known) throw InputError(what + ": unknown field \"" + it.key() + "\"");
-  }
-  for (const char* k : keys) (void)require(j, k, what);
-}
-
 RayInput parse_input(const Json& j, Prim prim) {
   static const char* names[] = {"triangle", "sphere", "box", "plane"};
   const char* key = names[static_cast<int>(prim)];

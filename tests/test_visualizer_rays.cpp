@@ -70,34 +70,30 @@ TEST_CASE("visualizer rays: the ray lessons load into the 3D canvas", "[visualiz
 TEST_CASE("visualizer rays: the hit marker is at the hit point on the hit step only", "[visualizer][rays]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  SECTION("the shared-edge crack: exact hits, float misses") {
-    REQUIRE(app.open_lesson(default_lessons_dir() / "05-triangle-crack.md"));
+  // Opens the lesson, checks the marker on the exact run's hit step and its absence one step
+  // earlier; returns the hit point (rendered at the hit step) for further checks.
+  auto marker_only_on_hit_step = [&](const char* lesson) {
+    REQUIRE(app.open_lesson(default_lessons_dir() / lesson));
     const auto [step, p] = hit_of(*app.model(0));
+    app.set_step(step - 1);
+    host.render();
+    CHECK(near_colour(host, *ray_canvas(app, 0).screen_of(p), kRayHit) == 0);
     app.set_step(step);
     host.render();
     const auto at = ray_canvas(app, 0).screen_of(p);
     REQUIRE(at);
     CHECK(near_colour(host, *at, kRayHit) >= 20);
+    return p;
+  };
+  SECTION("the shared-edge crack: exact hits, float misses") {
+    const auto p = marker_only_on_hit_step("05-triangle-crack.md");
     // The float run (right) missed: no marker at the same world point.
     const auto at_float = ray_canvas(app, 1).screen_of(p);
     REQUIRE(at_float);
     CHECK(near_colour(host, *at_float, kRayHit) == 0);
-    // One step earlier the exact run has not hit yet.
-    app.set_step(step - 1);
-    host.render();
-    CHECK(near_colour(host, *ray_canvas(app, 0).screen_of(p), kRayHit) == 0);
   }
   SECTION("the far sphere, zoomed onto it") {
-    REQUIRE(app.open_lesson(default_lessons_dir() / "06-far-sphere.md"));
-    const auto [step, p] = hit_of(*app.model(0));
-    app.set_step(step);
-    host.render();
-    const auto at = ray_canvas(app, 0).screen_of(p);
-    REQUIRE(at);
-    CHECK(near_colour(host, *at, kRayHit) >= 20);
-    app.set_step(step - 1);
-    host.render();
-    CHECK(near_colour(host, *ray_canvas(app, 0).screen_of(p), kRayHit) == 0);
+    marker_only_on_hit_step("06-far-sphere.md");
   }
 }
 
