@@ -32,19 +32,19 @@ void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool j
   if (json) {
     for (const BenchRow& r : rows)
       std::cout << Json{{"algorithm", alg.id}, {"set", r.set}, {"numeric", numeric_name(r.numeric)}, {"ns_per_op", r.ns_per_op},
-                        {"mismatches", r.mismatches}, {"cases", r.cases}, {"ops", r.ops}, {"fallbacks", r.fallbacks},
+                        {"mismatches", r.mismatches}, {"cases", r.cases}, {"ops", r.ops}, {"fallbacks", r.fallbacks}, {"later_stage", r.later_stage},
                         {"max_error", r.max_error}}.dump()
                 << '\n';
     return;
   }
   std::printf("%s: ns per output unit (best of repeats), cases differing from exact\n", std::string(alg.id).c_str());
-  std::printf("%-8s %-9s %8s %10s %10s %8s %10s %10s\n", "set", "numeric", "cases", "ops", "ns/op", "x double", "mismatch", "fallback");
+  std::printf("%-8s %-9s %8s %10s %10s %8s %10s %8s %10s\n", "set", "numeric", "cases", "ops", "ns/op", "x double", "mismatch", "stage 2", "fallback");
   for (const BenchRow& r : rows) {
     double base = 0;
     for (const BenchRow& b : rows)
       if (b.set == r.set && b.numeric == Numeric::f64) base = b.ns_per_op;
-    std::printf("%-8s %-9s %8zu %10zu %10.2f %8.2f %10zu %10zu\n", r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(),
-                r.cases, r.ops, r.ns_per_op, base > 0 ? r.ns_per_op / base : 0.0, r.mismatches, r.fallbacks);
+    std::printf("%-8s %-9s %8zu %10zu %10.2f %8.2f %10zu %8zu %10zu\n", r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(),
+                r.cases, r.ops, r.ns_per_op, base > 0 ? r.ns_per_op / base : 0.0, r.mismatches, r.later_stage, r.fallbacks);
   }
 }
 

@@ -17,10 +17,13 @@
 //             static double error(const Output& got, const Output& exact), reported as max;
 //             static std::size_t estimate_steps(const Input&): an upper estimate the recorder
 //             reserves (reserved memory costs nothing until touched; regrowth copies it all);
-//             using Filtered = <number type for filtered mode> (default Interval). It must throw
-//             Uncertain when it cannot decide, and have a NumericOf specialization = filtered.
+//             using Filters = std::tuple<number types for filtered mode> (default Interval): the
+//             stages of the filter, cheapest first. Each must throw Uncertain when it cannot
+//             decide and have a NumericOf specialization = filtered; exact rationals follow last.
 #pragma once
 #include <chrono>
+#include <optional>
+#include <tuple>
 #include <type_traits>
 #include "catalog.hpp"
 #include "core/jsonl_probe.hpp"
@@ -32,14 +35,16 @@ template <class Input> struct BenchSet {
   std::vector<Input> inputs;
 };
 
-template <class Spec> struct FilteredOf {
-  using type = Interval;
+template <class Spec> struct FiltersOf {
+  using type = std::tuple<Interval>;
 };
 template <class Spec>
-  requires requires { typename Spec::Filtered; }
-struct FilteredOf<Spec> {
-  using type = typename Spec::Filtered;
+  requires requires { typename Spec::Filters; }
+struct FiltersOf<Spec> {
+  using type = typename Spec::Filters;
 };
+// The first (cheapest) filter stage: the number type of filtered mode's prepared inputs.
+template <class Spec> using FirstFilter = std::tuple_element_t<0, typename FiltersOf<Spec>::type>;
 
 template <class Spec> constexpr bool spec_has(Numeric n) {
   for (Numeric m : Spec::numerics)
@@ -53,15 +58,39 @@ template <class Spec, class F> auto with_number_type(Numeric n, F&& f) {
     case Numeric::f32: if constexpr (spec_has<Spec>(Numeric::f32)) return f(std::type_identity<float>{}); break;
     case Numeric::f64: if constexpr (spec_has<Spec>(Numeric::f64)) return f(std::type_identity<double>{}); break;
     case Numeric::integer: if constexpr (spec_has<Spec>(Numeric::integer)) return f(std::type_identity<std::int64_t>{}); break;
-    case Numeric::filtered: if constexpr (spec_has<Spec>(Numeric::filtered)) return f(std::type_identity<typename FilteredOf<Spec>::type>{}); break;
+    case Numeric::filtered: if constexpr (spec_has<Spec>(Numeric::filtered)) return f(std::type_identity<FirstFilter<Spec>>{}); break;
     case Numeric::exact: if constexpr (spec_has<Spec>(Numeric::exact)) return f(std::type_identity<Rational>{}); break;
   }
   throw InputError(std::string(Spec::Algo::id) + " does not run on '" + std::string(numeric_name(n)) + "'");
 }
 
+// Filtered mode: runs the filter stages from `first` on, untraced, and returns f<S>(input, stage)
+// for the first stage S that decides every comparison, or f<Rational>(input, number of stages)
+// when none does. prep<S>() gives the input prepared for S (it may throw Uncertain).
+template <class Spec, class Prep, class F> auto first_certain_stage(Prep&& prep, std::size_t first, F&& f) {
+  return [&]<class... S>(std::type_identity<std::tuple<S...>>) {
+    using R = decltype(f.template operator()<Rational>(prep.template operator()<Rational>(), std::size_t{0}));
+    std::optional<R> out;
+    std::size_t stage = 0;
+    (void)((stage++ >= first && [&] {
+              try {
+                out.emplace(run_filter_stage<S>([&] { return f.template operator()<S>(prep.template operator()<S>(), stage - 1); }));
+                return true;
+              } catch (const Uncertain&) {
+                return false;
+              }
+            }()) || ...);
+    if (!out) out.emplace(f.template operator()<Rational>(prep.template operator()<Rational>(), sizeof...(S)));
+    return std::move(*out);
+  }(std::type_identity<typename FiltersOf<Spec>::type>{});
+}
+template <class Spec> auto preparer(const typename Spec::Input& in) {
+  return [&in]<class S>() { return Spec::template prepare<S>(in); };
+}
+
 // Computes the output for mode n. `visit(type_identity<Num>, compute)` makes a probe, calls
 // compute(probe) and does what it likes with the probe afterwards. Filtered mode decides first on
-// intervals, untraced; if a decision is uncertain it runs on exact rationals instead.
+// the filter stages, untraced, and traces the first stage that is certain, or exact rationals.
 template <class Spec, class Visit>
 auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool* fell_back) {
   auto go = [&](auto t) {
@@ -70,34 +99,94 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
     return visit(t, [&](auto& probe) { return Spec::template compute<Num>(prepared, probe); });
   };
   *fell_back = false;
-  if (n == Numeric::filtered) {
-    if constexpr (spec_has<Spec>(Numeric::filtered)) {
-      try {
-        NoProbe none;
-        using F = typename FilteredOf<Spec>::type;
-        (void)Spec::template compute<F>(Spec::template prepare<F>(in), none);
-      } catch (const Uncertain&) {
-        *fell_back = true;
-        return go(std::type_identity<Rational>{});
-      }
+  if constexpr (spec_has<Spec>(Numeric::filtered)) {
+    if (n == Numeric::filtered) {
+      std::size_t stage = 0;
+      (void)first_certain_stage<Spec>(preparer<Spec>(in), 0, [&]<class S>(const auto& prepared, std::size_t k) {
+        if constexpr (!std::is_same_v<S, Rational>) {
+          NoProbe none;
+          (void)Spec::template compute<S>(prepared, none);  // undecided: the next stage
+        }
+        stage = k;
+        return 0;
+      });
+      *fell_back = stage == std::tuple_size_v<typename FiltersOf<Spec>::type>;
+      return [&]<class... S>(std::type_identity<std::tuple<S...>>) {
+        using R = decltype(go(std::type_identity<Rational>{}));
+        std::optional<R> out;
+        std::size_t k = 0;
+        (void)((k++ == stage && (out.emplace(go(std::type_identity<S>{})), true)) || ...);
+        if (!out) out.emplace(go(std::type_identity<Rational>{}));
+        return std::move(*out);
+      }(std::type_identity<typename FiltersOf<Spec>::type>{});
     }
   }
   return with_number_type<Spec>(n, go);
 }
 
-// One untraced run for benchmarks; filtered falls back to exact and counts it.
-template <class Spec, class Num>
-typename Spec::Output bench_one(const auto& prepared, const typename Spec::Input& in, std::size_t& fallbacks) {
+// Inputs prepared ahead (outside the timing, as for every mode) for every filter stage and for
+// exact rationals; nullopt where a stage cannot take the input.
+template <class Spec, class Stages = typename FiltersOf<Spec>::type> struct LaterInputs;
+template <class Spec, class... S> struct LaterInputs<Spec, std::tuple<S...>> {
+  template <class N> using Column = std::vector<std::optional<decltype(Spec::template prepare<N>(std::declval<const typename Spec::Input&>()))>>;
+  std::tuple<Column<S>..., Column<Rational>> columns;
+
+  explicit LaterInputs(const std::vector<typename Spec::Input>& inputs) {
+    (fill<S>(inputs), ...);
+    fill<Rational>(inputs);
+  }
+  template <class N> const auto& at(std::size_t i) const {
+    const auto& p = std::get<Column<N>>(columns)[i];
+    if (!p) throw Uncertain{};
+    return *p;
+  }
+
+ private:
+  template <class N> void fill(const std::vector<typename Spec::Input>& inputs) {
+    for (const auto& in : inputs) {
+      auto& column = std::get<Column<N>>(columns);
+      try {
+        column.emplace_back(Spec::template prepare<N>(in));
+      } catch (const Uncertain&) {
+        column.emplace_back();
+      }
+    }
+  }
+};
+
+// The later filter stages and exact rationals for case i, counting who decided.
+template <class Spec> [[gnu::noinline]] typename Spec::Output bench_later_stages(const LaterInputs<Spec>& later, std::size_t i, BenchRow& row) {
   NoProbe none;
-  if constexpr (std::is_same_v<Num, typename FilteredOf<Spec>::type>) {
+  auto prep = [&]<class S>() -> const auto& { return later.template at<S>(i); };
+  std::size_t decided_by = 0;
+  auto out = first_certain_stage<Spec>(prep, 1, [&]<class S>(const auto& p, std::size_t stage) {
+    decided_by = stage;
+    return Spec::template compute<S>(p, none);
+  });
+  (decided_by == std::tuple_size_v<typename FiltersOf<Spec>::type> ? row.fallbacks : row.later_stage)++;
+  return out;
+}
+
+// One untraced run for benchmarks, into out. Filtered mode runs its first stage on the prepared
+// input and, when that is uncertain, the later stages (a cost the timing includes). A flagging
+// first stage needs no try block in the loop, and assigning to out directly (rather than returning
+// one of two results) keeps the output out of a stack temporary.
+template <class Spec, class Num>
+void bench_one(const auto& prepared, const LaterInputs<Spec>& later, std::size_t i, typename Spec::Output& out, BenchRow& row) {
+  NoProbe none;
+  if constexpr (requires { Num::uncertain(); }) {
+    Num::clear_uncertain();
+    out = Spec::template compute<Num>(prepared, none);
+    if (Num::uncertain()) [[unlikely]]
+      out = bench_later_stages<Spec>(later, i, row);
+  } else if constexpr (is_filtered<Num>) {
     try {
-      return Spec::template compute<Num>(prepared, none);
+      out = Spec::template compute<Num>(prepared, none);
     } catch (const Uncertain&) {
-      ++fallbacks;
-      return Spec::template compute<Rational>(Spec::template prepare<Rational>(in), none);
+      out = bench_later_stages<Spec>(later, i, row);
     }
   } else {
-    return Spec::template compute<Num>(prepared, none);
+    out = Spec::template compute<Num>(prepared, none);
   }
 }
 
@@ -120,11 +209,12 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
       std::vector<decltype(Spec::template prepare<Num>(set.inputs[0]))> prepared;
       for (const auto& in : set.inputs) prepared.push_back(Spec::template prepare<Num>(in));
       std::vector<Output> outs(prepared.size());
+      const LaterInputs<Spec> later(is_filtered<Num> ? set.inputs : std::vector<typename Spec::Input>{});
       double best = 1e300;
       for (int r = 0; r < repeats; ++r) {
-        row.fallbacks = 0;
+        row.fallbacks = row.later_stage = 0;
         const auto t0 = std::chrono::steady_clock::now();
-        for (std::size_t i = 0; i < prepared.size(); ++i) outs[i] = bench_one<Spec, Num>(prepared[i], set.inputs[i], row.fallbacks);
+        for (std::size_t i = 0; i < prepared.size(); ++i) bench_one<Spec, Num>(prepared[i], later, i, outs[i], row);
         best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       }
       for (std::size_t i = 0; i < outs.size(); ++i) {

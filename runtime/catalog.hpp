@@ -22,6 +22,7 @@ struct BenchRow {
   double ns_per_op = 0;                 // best of the repeats
   std::size_t mismatches = 0;           // cases whose output differs from exact
   std::size_t fallbacks = 0;            // filtered mode: cases that needed the exact re-run
+  std::size_t later_stage = 0;          // filtered mode: cases a later (slower) filter stage decided
   double max_error = 0;                 // family-defined (e.g. t error in ulps), 0 if none
 };
 

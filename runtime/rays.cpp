@@ -205,14 +205,12 @@ std::vector<BenchSet<RayInput>> bench_sets_for(Prim p) {
   return {random, hard};
 }
 
-// The filtered number types; Bounded for the variants without static bounds.
-template <class Num> constexpr bool filter_num = std::is_same_v<Num, Static> || std::is_same_v<Num, Bounded>;
-
 template <class AlgoT, Prim P> struct RaySpec {
   using Algo = AlgoT;
   using Input = RayInput;
   using Output = RayOutput;
-  using Filtered = Static;  // per-decision static filter (docs/accuracy-rays.md)
+  // The magnitude filter, then intervals for what it leaves uncertain (docs/accuracy-rays.md).
+  using Filters = std::tuple<Mag, Interval>;
   static constexpr std::string_view family = "ray";
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static Input parse(const Json& j, Numeric) { return parse_input(j, P); }
@@ -220,7 +218,7 @@ template <class AlgoT, Prim P> struct RaySpec {
     Prepared<Num> p;
     p.ray.o = to_num<Num>(in.o);
     p.ray.d = to_num<Num>(in.d);
-    if constexpr (std::is_floating_point_v<Num> || filter_num<Num>)
+    if constexpr (std::is_floating_point_v<Num> || is_filtered<Num>)
       for (int k = 0; k < 3; ++k)
         if (in.d_neg_zero[k]) p.ray.d[k] = Num(-0.0);
     for (int i = 0; i < 3; ++i) p.v[i] = to_num<Num>(in.v[i]);
@@ -264,7 +262,7 @@ template <class AlgoT, Prim P> struct RaySpec {
 template <class AlgoT, auto Fn> struct TriangleSpec : RaySpec<AlgoT, Prim::triangle> {
   static inline const std::string example =
       R"({"ray":{"o":[0,0,10],"d":[0.30458447,0.30458447,-0.9024725]},"triangle":[[-5,-5,0],[5,-5,0],[5,5,0]]})";
-  template <class Num, class Probe> static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
+  template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
     const auto h = Fn(p, probe);
     if (!h.hit || !p.attr) return make_output<Num>(h.hit, h.t, true, &h.b, nullptr, nullptr);
     // Inverse mapping: the vertex attributes interpolated with the barycentric weights.
@@ -275,10 +273,8 @@ template <class AlgoT, auto Fn> struct TriangleSpec : RaySpec<AlgoT, Prim::trian
   }
 };
 template <class AlgoT, auto Fn> struct SphereSpec : RaySpec<AlgoT, Prim::sphere> {
-  // Static bounds exist for the stable variant; the naive ones keep the running bound.
-  using Filtered = std::conditional_t<std::is_same_v<AlgoT, ray::RaySphereStable>, Static, Bounded>;
   static inline const std::string example = R"({"ray":{"o":[0,0,0],"d":[1,0.0001,0]},"sphere":{"c":[100000000,0,0],"r":1}})";
-  template <class Num, class Probe> static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
+  template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
     const auto h = Fn(p, probe);
     return make_output<Num>(h.hit, h.t, h.t_exact, nullptr, nullptr, nullptr);
   }
@@ -286,25 +282,25 @@ template <class AlgoT, auto Fn> struct SphereSpec : RaySpec<AlgoT, Prim::sphere>
 
 struct BoxSpec : RaySpec<ray::RayBox, Prim::box> {
   static inline const std::string example = R"({"ray":{"o":[0,1,0.5],"d":[1,-0.0,0]},"box":{"min":[1,0,0],"max":[2,1,1]}})";
-  template <class Num, class Probe> static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
+  template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
     const auto h = ray::ray_box<Num>(p.ray, p.v[0], p.v[1], probe);
     return make_output<Num>(h.hit, h.t, true, nullptr, &h.t_near, &h.t_far);
   }
 };
 struct PlaneSpec : RaySpec<ray::RayPlane, Prim::plane> {
   static inline const std::string example = R"({"ray":{"o":[0,0,1],"d":[1,0,-0.001]},"plane":{"p":[0,0,0],"n":[0,0,1]}})";
-  template <class Num, class Probe> static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
+  template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
     const auto h = ray::ray_plane<Num>(p.ray, p.v[0], p.v[1], probe);
     return make_output<Num>(h.hit, h.t, true, nullptr, nullptr, nullptr);
   }
 };
 
-constexpr auto tri_bary = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_triangle_barycentric<Num>(p.ray, p.v, probe); };
-constexpr auto tri_mt = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_triangle_mt<Num>(p.ray, p.v, probe); };
-constexpr auto tri_wt = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_triangle_watertight<Num>(p.ray, p.v, probe); };
-constexpr auto sph_geo = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_sphere_geometric<Num>(p.ray, p.v[0], p.r, probe); };
-constexpr auto sph_quad = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_sphere_quadratic<Num>(p.ray, p.v[0], p.r, probe); };
-constexpr auto sph_stable = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) { return ray::ray_sphere_stable<Num>(p.ray, p.v[0], p.r, probe); };
+constexpr auto tri_bary = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_triangle_barycentric<Num>(p.ray, p.v, probe); };
+constexpr auto tri_mt = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_triangle_mt<Num>(p.ray, p.v, probe); };
+constexpr auto tri_wt = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_triangle_watertight<Num>(p.ray, p.v, probe); };
+constexpr auto sph_geo = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_geometric<Num>(p.ray, p.v[0], p.r, probe); };
+constexpr auto sph_quad = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_quadratic<Num>(p.ray, p.v[0], p.r, probe); };
+constexpr auto sph_stable = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_stable<Num>(p.ray, p.v[0], p.r, probe); };
 
 
 // ---- camera-ray and sphere-uv: float and double only (their values are transcendental). The

@@ -231,15 +231,23 @@ TEST_CASE("rays: seeded random cases against the oracle", "[rays]") {
     const float r = u(0.1, 1.5);
     const V3 oq = rq(o), dq = rq(d);
     const bool exact_too = k < kExact;
-    // filt: the variant's filtered number type (runtime/rays.cpp): Static, or Bounded for the
-    // naive sphere variants.
-    auto run = [&]<class F = Static>(auto&& alg, const oracle::RayResult& want, auto&& exact_check, std::type_identity<F> filt = {}) {
+    // The filtered chain of runtime/rays.cpp: Mag, then Interval, then exact. MagChecked runs too:
+    // it throws logic_error if a decision exceeds Mag's index budget or a product nears underflow.
+    auto run = [&](auto&& alg, const oracle::RayResult& want, auto&& exact_check) {
+      try {
+        (void)run_filter_stage<MagChecked>([&] { return alg(std::type_identity<MagChecked>{}); });
+      } catch (const Uncertain&) {
+      }
       const bool hit = [&] {
         try {
-          return alg(filt).hit;
+          return run_filter_stage<Mag>([&] { return alg(std::type_identity<Mag>{}).hit; });
         } catch (const Uncertain&) {
           ++fallbacks;
-          return alg(std::type_identity<Rational>{}).hit;
+          try {
+            return alg(std::type_identity<Interval>{}).hit;
+          } catch (const Uncertain&) {
+            return alg(std::type_identity<Rational>{}).hit;
+          }
         }
       }();
       REQUIRE(hit == want.hit);
@@ -281,10 +289,8 @@ TEST_CASE("rays: seeded random cases against the oracle", "[rays]") {
           return fn(ray, Vec3<Num>{Num(a[0]), Num(a[1]), Num(a[2])}, Num(r), t);
         };
       };
-      run(with([&](const auto& ray, const auto& cc, const auto& rr, auto t) { return ray::ray_sphere_geometric<typename decltype(t)::type>(ray, cc, rr, none); }), want, check_sph,
-          std::type_identity<Bounded>{});
-      run(with([&](const auto& ray, const auto& cc, const auto& rr, auto t) { return ray::ray_sphere_quadratic<typename decltype(t)::type>(ray, cc, rr, none); }), want, check_sph,
-          std::type_identity<Bounded>{});
+      run(with([&](const auto& ray, const auto& cc, const auto& rr, auto t) { return ray::ray_sphere_geometric<typename decltype(t)::type>(ray, cc, rr, none); }), want, check_sph);
+      run(with([&](const auto& ray, const auto& cc, const auto& rr, auto t) { return ray::ray_sphere_quadratic<typename decltype(t)::type>(ray, cc, rr, none); }), want, check_sph);
       run(with([&](const auto& ray, const auto& cc, const auto& rr, auto t) { return ray::ray_sphere_stable<typename decltype(t)::type>(ray, cc, rr, none); }), want, check_sph);
     }
     {
@@ -309,6 +315,51 @@ TEST_CASE("rays: seeded random cases against the oracle", "[rays]") {
     }
   }
   WARN("random: " << kFiltered << " cases per primitive (filtered), " << kExact << " exact; filtered fallbacks " << fallbacks);
+}
+
+// Mag's own preconditions, checked by MagChecked on every ray variant: no decision exceeds the
+// index budget and no product comes near underflow, on the hard sets, the corpus, and the hard
+// sets scaled towards both ends of Mag's input range (2^-90 and 2^90). A violation throws
+// logic_error, which fails the test.
+TEST_CASE("rays: Mag's index budget and underflow margin hold on hard and scaled inputs", "[rays]") {
+  using M = MagChecked;
+  std::vector<std::pair<std::string, Json>> inputs;
+  for (const Json& c : read_jsonl("corpus.jsonl")) inputs.push_back({c["primitive"], c["input"]});
+  for (const char* prim : {"triangle", "sphere", "box", "plane"})
+    for (const Json& j : rays::hard_inputs(prim, 7)) inputs.push_back({prim, j});
+  std::size_t runs = 0;
+  for (const double scale : {1.0, 0x1p-90, 0x1p90}) {
+    for (const auto& [prim, in] : inputs) {
+      const Parsed p = parse(in, prim);
+      const auto m = [&](const Rational& x) { return M(x.get_d() * scale); };
+      const auto mv = [&](const V3& v) { return Vec3<M>{m(v.x), m(v.y), m(v.z)}; };
+      // The direction is not scaled: it keeps the same rays.
+      const ray::Ray3<M> ray{mv(p.o), {M(p.d.x.get_d()), M(p.d.y.get_d()), M(p.d.z.get_d())}};
+      NoProbe none;
+      auto go = [&](auto&& alg) {
+        try {
+          (void)run_filter_stage<M>(alg);
+        } catch (const Uncertain&) {
+        }
+        ++runs;
+      };
+      if (prim == "triangle") {
+        const std::array<Vec3<M>, 3> v{mv(p.v[0]), mv(p.v[1]), mv(p.v[2])};
+        go([&] { return ray::ray_triangle_watertight<M>(ray, v, none).hit; });
+        go([&] { return ray::ray_triangle_mt<M>(ray, v, none).hit; });
+        go([&] { return ray::ray_triangle_barycentric<M>(ray, v, none).hit; });
+      } else if (prim == "sphere") {
+        go([&] { return ray::ray_sphere_geometric<M>(ray, mv(p.v[0]), m(p.r), none).hit; });
+        go([&] { return ray::ray_sphere_quadratic<M>(ray, mv(p.v[0]), m(p.r), none).hit; });
+        go([&] { return ray::ray_sphere_stable<M>(ray, mv(p.v[0]), m(p.r), none).hit; });
+      } else if (prim == "box") {
+        go([&] { return ray::ray_box<M>(ray, mv(p.v[0]), mv(p.v[1]), none).hit; });
+      } else {
+        go([&] { return ray::ray_plane<M>(ray, mv(p.v[0]), {M(p.v[1].x.get_d()), M(p.v[1].y.get_d()), M(p.v[1].z.get_d())}, none).hit; });
+      }
+    }
+  }
+  CHECK(runs > 3 * 10000);
 }
 
 // Replays exact traces: every recorded number is compared with a value computed here from the
@@ -420,6 +471,7 @@ TEST_CASE("rays: exact step replay, every variable", "[rays]") {
           } else {
             const Rational den = dotq(p.v[1], p.d);
             if (name == "den") want = den;
+            if (name == "num") want = dotq(p.v[1], sub(p.v[0], p.o));
             if (name == "t") want = dotq(p.v[1], sub(p.v[0], p.o)) / den;
           }
           if (approx && name != "t") {

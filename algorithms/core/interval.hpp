@@ -1,6 +1,6 @@
 // Filtered arithmetic: a double interval that surely contains the exact value. Every decision
 // (comparison, floor) is either certain or throws Uncertain; the caller then re-runs the whole
-// algorithm on exact rationals (see run_filtered). Same idea as CGAL's filtered predicates.
+// algorithm on exact rationals (see run_filter_stage). Same idea as CGAL's filtered predicates.
 //
 // Included by number.hpp after its declarations; include number.hpp, not this file.
 #pragma once
@@ -30,19 +30,25 @@ class Interval {
 
   friend Interval operator-(const Interval& a) { return hull(-a.hi_, -a.lo_); }
   friend Interval operator+(const Interval& a, const Interval& b) {
-    return outward(a.lo_ + b.lo_, a.hi_ + b.hi_, int_points(a, b));
+    const double lo = a.lo_ + b.lo_;
+    return outward(lo, a.hi_ + b.hi_, a.is_point() && b.is_point() && exact_sum(a.lo_, b.lo_, lo));
   }
   friend Interval operator-(const Interval& a, const Interval& b) {
-    return outward(a.lo_ - b.hi_, a.hi_ - b.lo_, int_points(a, b));
+    const double lo = a.lo_ - b.hi_;
+    return outward(lo, a.hi_ - b.lo_, a.is_point() && b.is_point() && exact_sum(a.lo_, -b.lo_, lo));
   }
   friend Interval operator*(const Interval& a, const Interval& b) {
     double p1 = a.lo_ * b.lo_, p2 = a.lo_ * b.hi_, p3 = a.hi_ * b.lo_, p4 = a.hi_ * b.hi_;
-    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), int_points(a, b));
+    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), a.is_point() && b.is_point() && std::fma(a.lo_, b.lo_, -p1) == 0);
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
     if (b.lo_ <= 0 && b.hi_ >= 0) throw Uncertain{};  // the divisor's sign is not known
     double p1 = a.lo_ / b.lo_, p2 = a.lo_ / b.hi_, p3 = a.hi_ / b.lo_, p4 = a.hi_ / b.hi_;
     return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), false);
+  }
+  // Needs exact(x) >= 0 (the caller decided it); a lower end below 0 is rounding and clamps to 0.
+  friend Interval sqrt(const Interval& x) {
+    return outward(std::sqrt(std::max(x.lo_, 0.0)), std::sqrt(std::max(x.hi_, 0.0)), false);
   }
   Interval& operator+=(const Interval& b) { return *this = *this + b; }
   Interval& operator-=(const Interval& b) { return *this = *this - b; }
@@ -65,17 +71,19 @@ class Interval {
 
  private:
   // Round-to-nearest endpoints are off by at most half an ulp, so each is widened by a safe
-  // margin, unless both operands are small integers and so is the result (then it is exact).
-  static bool int_points(const Interval& a, const Interval& b) {
-    return a.is_point() && b.is_point() && is_small_integer(a.lo_) && is_small_integer(b.lo_);
-  }
-  static Interval outward(double lo, double hi, bool int_operands) {
+  // margin, unless the operands were points and the result is exact: then it stays a point (an
+  // origin exactly on a plane gives p - o = 0 exactly, which then decides).
+  static Interval outward(double lo, double hi, bool exact) {
     if (!std::isfinite(lo) || !std::isfinite(hi)) throw Uncertain{};
     Interval r = hull(lo, hi);
-    if (!(int_operands && lo == hi && is_small_integer(lo))) r.widen();
+    if (!exact) r.widen();
     return r;
   }
-  static bool is_small_integer(double x) { return std::fabs(x) < 0x1p52 && x == std::floor(x); }
+  // Knuth's TwoSum: s = fl(a + b) is exact iff the rounding error it recovers is 0.
+  static bool exact_sum(double a, double b, double s) {
+    const double bv = s - a;
+    return (a - (s - bv)) + (b - bv) == 0;
+  }
   void widen() {
     constexpr double rel = 0x1p-51, abs_min = 0x1p-1021;
     lo_ = lo_ - (std::fabs(lo_) * rel + abs_min);
@@ -100,15 +108,16 @@ template <> inline Interval from_rational<Interval>(const Rational& q) {
 }
 }  // namespace num
 
-// Runs f on intervals; if any decision is uncertain, runs g on exact rationals. Returns whether
-// the exact fallback ran.
-template <class F, class G> bool run_filtered(F&& f, G&& g) {
-  try {
-    f();
-    return false;
-  } catch (const Uncertain&) {
-    g();
-    return true;
+// Runs f() on filter stage S and returns its result, or throws Uncertain when a decision was not
+// certain: Interval throws by itself, a flagging type (Mag) is cleared before and checked after.
+template <class S, class F> auto run_filter_stage(F&& f) {
+  if constexpr (requires { S::uncertain(); }) {
+    S::clear_uncertain();
+    auto out = f();
+    if (S::uncertain()) throw Uncertain{};
+    return out;
+  } else {
+    return f();
   }
 }
 

@@ -31,8 +31,6 @@ inline std::optional<Numeric> parse_numeric(std::string_view s) {
 
 using Rational = mpq_class;
 class Interval;  // core/interval.hpp
-class Bounded;   // core/bounded.hpp
-class Static;    // core/static_filter.hpp
 
 namespace num {
 
@@ -46,8 +44,6 @@ inline std::int64_t floor_int(const Rational& x) {
   return q.get_si();
 }
 std::int64_t floor_int(const Interval& x);
-std::int64_t floor_int(const Bounded& x);
-std::int64_t floor_int(const Static& x);
 template <class T> std::int64_t ceil_int(const T& x) { return -floor_int(T(-x)); }
 
 inline double to_double(float x) { return x; }
@@ -55,11 +51,12 @@ inline double to_double(double x) { return x; }
 inline double to_double(std::int64_t x) { return static_cast<double>(x); }
 inline double to_double(const Rational& x) { return x.get_d(); }
 double to_double(const Interval& x);
-double to_double(const Bounded& x);
-double to_double(const Static& x);
 
 template <class T> T abs(const T& x) { return x < T(0) ? T(-x) : x; }
 template <class T> int sign(const T& x) { return (T(0) < x) - (x < T(0)); }
+// c ? a : b. Filtered types overload it to select without a branch; algorithms use it where the
+// choice depends on the data.
+template <class T> [[gnu::always_inline]] inline T select(bool c, const T& a, const T& b) { return c ? a : b; }
 
 // Converts an exact input value to T, rounding to nearest (ties to even) for float and double.
 template <class T> T from_rational(const Rational& q);
@@ -75,8 +72,6 @@ std::string to_text(double x);
 std::string to_text(std::int64_t x);
 std::string to_text(const Rational& x);
 std::string to_text(const Interval& x);
-std::string to_text(const Bounded& x);
-std::string to_text(const Static& x);
 
 // The exact rational value of a finite float or double.
 Rational to_rational(double x);
@@ -86,8 +81,7 @@ Rational to_rational(double x);
 }  // namespace sw
 
 #include "core/interval.hpp"  // filtered numbers; needs the declarations above
-#include "core/bounded.hpp"   // filtered numbers with a running error bound
-#include "core/static_filter.hpp"  // double arithmetic, per-decision a-priori bounds (the ray family)
+#include "core/mag.hpp"       // filtered doubles carrying their magnitude (the ray family)
 
 namespace sw {
 
@@ -97,8 +91,8 @@ template <> struct NumericOf<double> { static constexpr Numeric value = Numeric:
 template <> struct NumericOf<std::int64_t> { static constexpr Numeric value = Numeric::integer; };
 template <> struct NumericOf<Rational> { static constexpr Numeric value = Numeric::exact; };
 template <> struct NumericOf<Interval> { static constexpr Numeric value = Numeric::filtered; };
-template <> struct NumericOf<Bounded> { static constexpr Numeric value = Numeric::filtered; };
-template <> struct NumericOf<Static> { static constexpr Numeric value = Numeric::filtered; };
+template <bool C> struct NumericOf<BasicMag<C>> { static constexpr Numeric value = Numeric::filtered; };
+template <class T> constexpr bool is_filtered = NumericOf<T>::value == Numeric::filtered;
 
 // Lossless JSON text for a value: strings for rationals, numbers otherwise.
 template <class T> std::string json_value(const T& x) {

@@ -53,28 +53,29 @@ template <class Num, class Probe = NoProbe>
       }
       continue;
     }
-    // Static filter: two roundings, a relative error of 2.01 u, plus an underflowed quotient's 2^-1075.
-    const auto two_roundings = [](double z) { return 3 * filter::kU * std::fabs(z) + 0x1p-1073; };
-    Num t1 = certify(Num(Num(lo[k] - r.o[k]) / r.d[k]), two_roundings), t2 = certify(Num(Num(hi[k] - r.o[k]) / r.d[k]), two_roundings);
-    if (t1 > t2) std::swap(t1, t2);
-    if (!bounded || t1 > tn) tn = t1;
-    if (!bounded || t2 < tf) tf = t2;
-    bounded = true;
+    // The selections are branch-free (num::select): which way they go depends on the data.
+    const Num ta = Num(Num(lo[k] - r.o[k]) / r.d[k]), tb = Num(Num(hi[k] - r.o[k]) / r.d[k]);
+    const bool flip = ta > tb;
+    const Num t1 = num::select(flip, tb, ta), t2 = num::select(flip, ta, tb);
+    if (!bounded) {
+      tn = t1, tf = t2, bounded = true;
+    } else {
+      tn = num::select(t1 > tn, t1, tn);
+      tf = num::select(t2 < tf, t2, tf);
+    }
     if constexpr (Probe::on) probe.step(L::clip, StepKind::advance).idx("k", k).num("t1", t1).num("t2", t2).num("t_near", tn).num("t_far", tf);
   }
   // d != 0, so some axis bounded the interval.
   out.t_near = tn, out.t_far = tf;
-  if (tn > tf) {
-    if constexpr (Probe::on) probe.step(L::empty, StepKind::miss);
-    return out;
+  const Num zero(0);
+  const bool empty = tn > tf, behind = !(tf > zero);
+  out.hit = !empty & !behind;
+  out.t = num::select(tn > zero, tn, tf);
+  if constexpr (Probe::on) {
+    if (empty) probe.step(L::empty, StepKind::miss);
+    else if (behind) probe.step(L::exit, StepKind::miss);
+    else probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
   }
-  if (!(tf > Num(0))) {
-    if constexpr (Probe::on) probe.step(L::exit, StepKind::miss);
-    return out;
-  }
-  out.hit = true;
-  out.t = tn > Num(0) ? tn : tf;
-  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
   return out;
 }
 

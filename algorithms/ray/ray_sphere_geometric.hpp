@@ -35,7 +35,7 @@ struct RaySphereGeometric {
 };
 
 template <class Num, class Probe = NoProbe>
-SphereHit<Num> ray_sphere_geometric(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_geometric(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
   using L = RaySphereGeometric;
   SphereHit<Num> out;
   const Vec3<Num> l = c - r.o;

@@ -22,7 +22,7 @@ struct RaySphereQuadratic {
 };
 
 template <class Num, class Probe = NoProbe>
-SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
   using L = RaySphereQuadratic;
   SphereHit<Num> out;
   const Vec3<Num> f = r.o - c;
@@ -40,14 +40,13 @@ SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, cons
   bool e0 = true, e1 = true;
   const Num t0 = Num(add_root(nb, -1, disc, e0) / two_a), t1 = Num(add_root(nb, 1, disc, e1) / two_a);
   if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("t0", t0).num("t1", t1);
-  if (t0 > Num(0)) {
-    out = {true, t0, e0};
-    if constexpr (Probe::on) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + t0 * r.d));
-  } else if (t1 > Num(0)) {
-    out = {true, t1, e1};
-    if constexpr (Probe::on) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + t1 * r.d));
-  } else {
-    if constexpr (Probe::on) probe.step(L::none, StepKind::miss);
+  // Branch-free from here (the outcome depends on the data).
+  const bool near_hit = t0 > Num(0), far_hit = t1 > Num(0);
+  out = {bool(near_hit | far_hit), num::select(near_hit, t0, t1), near_hit ? e0 : e1};
+  if constexpr (Probe::on) {
+    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + t0 * r.d));
+    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + t1 * r.d));
+    else probe.step(L::none, StepKind::miss);
   }
   return out;
 }

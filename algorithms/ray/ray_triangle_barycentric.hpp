@@ -34,16 +34,13 @@ template <class Num, class Probe = NoProbe>
     probe.step(L::normal, StepKind::init).num("nx", n.x).num("ny", n.y).num("nz", n.z)
         .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
         .geo(GeoKind::triangle3, vtx[0].x, vtx[0].y, vtx[0].z, vtx[1].x, vtx[1].y, vtx[1].z, vtx[2].x, vtx[2].y, vtx[2].z);
-  // Static filter bounds (docs/accuracy-rays.md): e1, e2 and v0 - o are rounded differences.
-  const Num den = certify(dot(n, r.d), [&](double) { return filter::poly(43, filter::mag(e1), filter::mag(e2), filter::mag(r.d)); });
+  const Num den = dot(n, r.d);
   if constexpr (Probe::on) probe.step(L::denom, StepKind::decide).num("den", den);
   if (den == Num(0)) {
     if constexpr (Probe::on) probe.step(L::denom, StepKind::miss);
     return out;
   }
-  const Num t = certify(Num(dot(n, Vec3<Num>(vtx[0] - r.o)) / den), [&](double z) {
-    return filter::quot(z, filter::poly(49, filter::mag(e1), filter::mag(e2), filter::mag(Vec3<Num>(vtx[0] - r.o))), den);
-  });
+  const Num t = Num(dot(n, Vec3<Num>(vtx[0] - r.o)) / den);
   if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
   if (!(t > Num(0))) {
     if constexpr (Probe::on) probe.step(L::t, StepKind::miss);
@@ -55,17 +52,10 @@ template <class Num, class Probe = NoProbe>
   if constexpr (Probe::on) probe.step(L::drop, StepKind::decide).idx("k", k);
   const Vec3<Num> w = p - vtx[0];
   const Num nk = Num(e1[i] * e2[j] - e1[j] * e2[i]);  // = n_k, nonzero as |n_k| is max and n != 0
-  // w carries t's error times |d| plus three roundings; a numerator w x e (in 2D) adds 2 |e| that.
-  const auto bary_bound = [&](double z, double em) {  // em: max |e| of the numerator's edge
-    const double dm = filter::mag(r.d), wm = filter::mag(w), tm = std::fabs(num::to_double(t));
-    const double ew = filter::kSlack * (dm * filter::err(t) + filter::kU * (2 * (filter::mag(r.o) + tm * dm) + wm));
-    const double bn = filter::poly(7, wm, em) + 2 * filter::kSlack * em * ew;
-    return filter::quot(z, bn, num::to_double(nk), filter::poly(9, filter::mag(e1), filter::mag(e2)));
-  };
-  const Num beta = certify(Num(Num(w[i] * e2[j] - w[j] * e2[i]) / nk), [&](double z) { return bary_bound(z, filter::mag(e2)); });
-  const Num gamma = certify(Num(Num(e1[i] * w[j] - e1[j] * w[i]) / nk), [&](double z) { return bary_bound(z, filter::mag(e1)); });
+  const Num beta = Num(Num(w[i] * e2[j] - w[j] * e2[i]) / nk);
+  const Num gamma = Num(Num(e1[i] * w[j] - e1[j] * w[i]) / nk);
   if constexpr (Probe::on) probe.step(L::solve, StepKind::decide).num("beta", beta).num("gamma", gamma);
-  if (beta < Num(0) || gamma < Num(0) || certify(Num(beta + gamma), [&](double z) { return filter::sum(z, beta, gamma); }) > Num(1)) {
+  if (beta < Num(0) || gamma < Num(0) || Num(beta + gamma) > Num(1)) {
     if constexpr (Probe::on) probe.step(L::inside, StepKind::miss);
     return out;
   }

@@ -34,8 +34,7 @@ template <class Num, class Probe = NoProbe>
     probe.step(L::edges, StepKind::init).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
         .geo(GeoKind::triangle3, vtx[0].x, vtx[0].y, vtx[0].z, vtx[1].x, vtx[1].y, vtx[1].z, vtx[2].x, vtx[2].y, vtx[2].z);
   const Vec3<Num> p = cross(r.d, e2);
-  // Static filter bounds (docs/accuracy-rays.md): e1, e2, s are rounded differences, d is exact.
-  const Num det = certify(dot(e1, p), [&](double) { return filter::poly(43, filter::mag(e1), filter::mag(r.d), filter::mag(e2)); });
+  const Num det = dot(e1, p);
   if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
   if (det == Num(0)) {
     if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
@@ -43,20 +42,20 @@ template <class Num, class Probe = NoProbe>
   }
   const Num inv = Num(Num(1) / det);
   const Vec3<Num> s = r.o - vtx[0];
-  const Num u = certify(Num(dot(s, p) * inv), [&](double z) { return filter::quot(z, filter::poly(43, filter::mag(s), filter::mag(r.d), filter::mag(e2)), det); });
+  const Num u = Num(dot(s, p) * inv);
   if constexpr (Probe::on) probe.step(L::u, StepKind::decide).num("u", u);
   if (u < Num(0) || u > Num(1)) {
     if constexpr (Probe::on) probe.step(L::u, StepKind::miss);
     return out;
   }
   const Vec3<Num> q = cross(s, e1);
-  const Num v = certify(Num(dot(r.d, q) * inv), [&](double z) { return filter::quot(z, filter::poly(43, filter::mag(r.d), filter::mag(s), filter::mag(e1)), det); });
+  const Num v = Num(dot(r.d, q) * inv);
   if constexpr (Probe::on) probe.step(L::v, StepKind::decide).num("v", v);
-  if (v < Num(0) || certify(Num(u + v), [&](double z) { return filter::sum(z, u, v); }) > Num(1)) {
+  if (v < Num(0) || Num(u + v) > Num(1)) {
     if constexpr (Probe::on) probe.step(L::v, StepKind::miss);
     return out;
   }
-  const Num t = certify(Num(dot(e2, q) * inv), [&](double z) { return filter::quot(z, filter::poly(49, filter::mag(e2), filter::mag(s), filter::mag(e1)), det); });
+  const Num t = Num(dot(e2, q) * inv);
   if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
   if (!(t > Num(0))) {
     if constexpr (Probe::on) probe.step(L::t, StepKind::miss);

@@ -57,10 +57,7 @@ template <class Num, class Probe = NoProbe>
   const Num cx = Num(c[kx] - sx * c[kz]), cy = Num(c[ky] - sy * c[kz]);
   if constexpr (Probe::on)
     probe.step(L::project, StepKind::init).num("Ax", ax).num("Ay", ay).num("Bx", bx).num("By", by).num("Cx", cx).num("Cy", cy);
-  // Static filter bounds (docs/accuracy-rays.md) from m = max |A, B, C| and |Sz|; |Sx|, |Sy| <= 1.
-  const auto m = [&] { return filter::max2(filter::max2(filter::mag(a), filter::mag(b)), filter::mag(c)); };
-  const auto edge = [&](double) { return filter::poly(81, m(), m()); };
-  Num u = certify(Num(cx * by - cy * bx), edge), w_v = certify(Num(ax * cy - ay * cx), edge), w = certify(Num(bx * ay - by * ax), edge);
+  Num u = Num(cx * by - cy * bx), w_v = Num(ax * cy - ay * cx), w = Num(bx * ay - by * ax);
   if constexpr (Probe::on) probe.step(L::edges, StepKind::decide).num("U", u).num("V", w_v).num("W", w);
   if constexpr (std::is_same_v<Num, float>) {
     if (u == 0.0f || w_v == 0.0f || w == 0.0f) {
@@ -78,14 +75,13 @@ template <class Num, class Probe = NoProbe>
     if constexpr (Probe::on) probe.step(L::sides, StepKind::miss);
     return out;
   }
-  const Num det = certify(Num(u + w_v + w), [&](double) { return filter::poly(289, m(), m()); });
+  const Num det = Num(u + w_v + w);
   if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
   if (det == zero) {
     if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
     return out;
   }
-  const Num t_num = certify(Num(u * Num(sz * a[kz]) + w_v * Num(sz * b[kz]) + w * Num(sz * c[kz])),
-                            [&](double) { return filter::poly(385, m(), m(), m(), std::fabs(num::to_double(sz))); });
+  const Num t_num = Num(u * Num(sz * a[kz]) + w_v * Num(sz * b[kz]) + w * Num(sz * c[kz]));
   if constexpr (Probe::on) probe.step(L::depth, StepKind::decide).num("T", t_num);
   if (t_num == zero || (t_num < zero) != (det < zero)) {
     if constexpr (Probe::on) probe.step(L::sign, StepKind::miss);

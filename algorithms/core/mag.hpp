@@ -1,0 +1,192 @@
+// The filtered number of the ray family: a double that carries its magnitude (the floating-point
+// filter of Burnikel, Funke and Schirra, with the index as a fixed budget instead of a field).
+//
+// A value is the pair (v, m): v is the double result and m the same expression evaluated on
+// magnitudes (|x| for an input, m_a + m_b for a sum or a difference, m_a m_b for a product). An
+// expression of index k <= kIndexBudget has |v - exact| <= gamma_k m (index rules and the proof:
+// docs/accuracy-rays.md, "Filtered mode"). A comparison is decided when the difference exceeds
+// that bound. Otherwise it raises a per-thread flag instead of throwing, so that the hot path has
+// no exception edges (a try block around inlined code cost the plane test 40%): whoever runs an
+// algorithm on Mag clears the flag first and, when it is raised afterwards, discards the result
+// and re-runs the case on a later stage (run_filter_stage does both). After an undecided
+// comparison the algorithm runs on with an arbitrary answer, so an algorithm used with Mag must
+// stay bounded whatever its comparisons return (the ray tests are straight-line code).
+// The pair shares one SSE register, so a sum or a product is one packed instruction: the bound
+// costs nothing until a comparison reads it.
+//
+// Preconditions the type enforces itself: an input outside {0} U [2^-100, 2^100] gets m = NaN (no
+// decision that depends on it is ever certain), which with the ray family's low degrees keeps
+// every product's magnitude far above the subnormal range (the tests check it, via Checked). An
+// overflow or a NaN makes m non-finite, which is never certain either.
+//
+// BasicMag<true> (MagChecked) also tracks each value's index and each product's magnitude and
+// throws std::logic_error when the budget or the underflow margin is exceeded; the tests run every
+// ray algorithm on it. Mag itself never pays for that.
+//
+// Included by number.hpp after its declarations; include number.hpp, not this file.
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace sw {
+
+namespace mag_detail {
+typedef double Pair __attribute__((vector_size(16)));  // [0] value, [1] magnitude
+typedef std::int64_t PairBits __attribute__((vector_size(16)));
+struct NoIndex {};
+struct Index {
+  int k = 0;
+};
+}  // namespace mag_detail
+
+template <bool Checked> class BasicMag {
+  using Pair = mag_detail::Pair;
+
+ public:
+  // The largest index any decision may have. The ray algorithms reach 38 (measured by
+  // MagChecked on the test sets, where every run verifies it; docs/accuracy-rays.md).
+  static constexpr int kIndexBudget = 64;
+  // |v - exact| <= gamma_K M_exact <= gamma_K (1 + gamma_K) m for K <= kIndexBudget, below kC m.
+  static constexpr double kC = kIndexBudget * 0x1p-53 * (1 + 0x1p-40);
+  static constexpr double kMinInput = 0x1p-100, kMaxInput = 0x1p100;
+  static constexpr double kMinProduct = 0x1p-969;  // a product's magnitude (Checked): u * 2^-1022 / u
+
+  BasicMag() = default;
+  [[gnu::always_inline]] BasicMag(double x) : p_{x, input_magnitude(x)} {}
+  BasicMag(int x) : BasicMag(double(x)) {}
+
+  // The flag: raised by an undecided comparison since the last clear.
+  static void clear_uncertain() { uncertain_ = false; }
+  static bool uncertain() { return uncertain_; }
+  [[gnu::noinline, gnu::cold]] static void raise_uncertain() { uncertain_ = true; }
+
+  double value() const { return p_[0]; }
+  double magnitude() const { return p_[1]; }
+  // The decision threshold for this value: |v| above it means the sign of v is the exact sign.
+  double threshold() const { return kC * p_[1] - 0x1p-1074; }
+
+  [[gnu::always_inline]] friend BasicMag operator-(const BasicMag& a) { return make(flip_value(a.p_), a.index()); }
+  [[gnu::always_inline]] friend BasicMag operator+(const BasicMag& a, const BasicMag& b) { return make(a.p_ + b.p_, sum_index(a, b)); }
+  [[gnu::always_inline]] friend BasicMag operator-(const BasicMag& a, const BasicMag& b) { return make(a.p_ + flip_value(b.p_), sum_index(a, b)); }
+  [[gnu::always_inline]] friend BasicMag operator*(const BasicMag& a, const BasicMag& b) {
+    return product(a.p_ * b.p_, a.index() + b.index() + 1);
+  }
+  // Needs |v_b| > 2 kC m_b (b's sign certain with room to spare); else the quotient's magnitude is
+  // NaN. Then |q - exact| <= gamma_{ka+kb+4} m_q with m_q = 2 m_a m_b / v_b^2 (for an input b,
+  // 2 m_a / |v_b|).
+  [[gnu::always_inline]] friend BasicMag operator/(const BasicMag& a, const BasicMag& b) {
+    const double vb = b.p_[0], mb = b.p_[1];
+    // In scalars, so that when only the value is used (a reported t) the magnitude's cost
+    // disappears; branch-free (a select, then a NaN added or not), so that a hit path ending in a
+    // division can still be if-converted.
+    const double poison = std::fabs(vb) > 2 * kC * mb ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    return product(Pair{a.p_[0] / vb, 2 * a.p_[1] * mb / (vb * vb) + poison}, a.index() + b.index() + 4);
+  }
+  BasicMag& operator+=(const BasicMag& b) { return *this = *this + b; }
+  BasicMag& operator-=(const BasicMag& b) { return *this = *this - b; }
+  BasicMag& operator*=(const BasicMag& b) { return *this = *this * b; }
+
+  // Needs exact(x) >= 0 (the caller decided it). |sqrt v - sqrt exact| <= |v - exact| / sqrt v, so
+  // m_s = m_x / sqrt(v_x) with one more rounding; a radicand of 0 is exact only when m_x = 0. A
+  // negative v means the caller found x < 0 (or its decision was undecided and the flag is up)
+  // and discards the root: it is 0, exactly, so that deciding on it raises nothing.
+  [[gnu::always_inline]] friend BasicMag sqrt(const BasicMag& x) {
+    const double v = x.p_[0], m = x.p_[1], s = std::sqrt(v > 0 ? v : 0.0);
+    const double ms = v > 0 ? m / s : (v < 0) | (m == 0) ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    return product(Pair{s, ms}, x.index() + 1);
+  }
+
+  // c ? a : b without a branch (a bitwise blend of both lanes), for selections that depend on the
+  // data: a mispredicted branch costs more than the whole filter.
+  [[gnu::always_inline]] static BasicMag blend(bool c, const BasicMag& a, const BasicMag& b) {
+    using Bits = mag_detail::PairBits;
+    const std::int64_t bit = -std::int64_t(c);
+    const Bits mask{bit, bit};
+    return make(reinterpret_cast<Pair>((reinterpret_cast<Bits>(a.p_) & mask) | (reinterpret_cast<Bits>(b.p_) & ~mask)), c ? a.index() : b.index());
+  }
+
+  // Each comparison decides the exact sign of a - b or throws; the result is then the double
+  // comparison itself, which the compiler can if-convert like plain double code.
+  [[gnu::always_inline]] friend bool operator<(const BasicMag& a, const BasicMag& b) { return certain(a - b) < 0; }
+  [[gnu::always_inline]] friend bool operator>(const BasicMag& a, const BasicMag& b) { return certain(a - b) > 0; }
+  [[gnu::always_inline]] friend bool operator<=(const BasicMag& a, const BasicMag& b) { return certain(a - b) <= 0; }
+  [[gnu::always_inline]] friend bool operator>=(const BasicMag& a, const BasicMag& b) { return certain(a - b) >= 0; }
+  [[gnu::always_inline]] friend bool operator==(const BasicMag& a, const BasicMag& b) { return certain(a - b) == 0; }
+  [[gnu::always_inline]] friend bool operator!=(const BasicMag& a, const BasicMag& b) { return certain(a - b) != 0; }
+
+  // |x|: exact, so the magnitude and the index are kept.
+  [[gnu::always_inline]] BasicMag absolute() const { return make(Pair{std::fabs(p_[0]), p_[1]}, index()); }
+
+ private:
+  // 0 has magnitude -0.0, so that x - 0 folds to x at compile time (m + -0.0 = m); it compares
+  // like 0 everywhere.
+  [[gnu::always_inline]] static double input_magnitude(double x) {
+    const double a = std::fabs(x);
+    return a == 0 ? -0.0 : (a >= kMinInput) & (a <= kMaxInput) ? a : std::numeric_limits<double>::quiet_NaN();
+  }
+  [[gnu::always_inline]] static Pair flip_value(Pair p) {
+    return reinterpret_cast<Pair>(reinterpret_cast<mag_detail::PairBits>(p) ^ mag_detail::PairBits{INT64_MIN, 0});
+  }
+  [[gnu::always_inline]] int index() const {
+    if constexpr (Checked) return ix_.k;
+    else return 0;
+  }
+  [[gnu::always_inline]] static int sum_index(const BasicMag& a, const BasicMag& b) { return (a.index() > b.index() ? a.index() : b.index()) + 1; }
+  [[gnu::always_inline]] static BasicMag make(Pair p, int k) {
+    BasicMag r;
+    r.p_ = p;
+    if constexpr (Checked) r.ix_.k = k;
+    return r;
+  }
+  // A product or quotient: Checked verifies that it kept clear of underflow.
+  [[gnu::always_inline]] static BasicMag product(Pair p, int k) {
+    if constexpr (Checked)
+      if (p[1] != 0 && p[1] < kMinProduct) throw std::logic_error("Mag: a product's magnitude " + std::to_string(p[1]) + " is near underflow");
+    return make(p, k);
+  }
+  // d's value, whose sign is the exact sign unless the flag was raised here. m = 0 means every
+  // term was 0, so v = 0 exactly. The flag is written only on the (cold) undecided path: a
+  // read-modify-write per comparison would chain every decision through memory.
+  [[gnu::always_inline]] static double certain(const BasicMag& d) {
+    if constexpr (Checked)
+      if (d.index() > kIndexBudget) throw std::logic_error("Mag: a decision of index " + std::to_string(d.index()) + " exceeds the budget");
+    const double v = d.p_[0];
+    if (!(std::fabs(v) > d.threshold())) [[unlikely]] raise_uncertain();
+    return v;
+  }
+  static inline thread_local bool uncertain_ = false;
+
+  Pair p_{0, 0};
+  [[no_unique_address]] std::conditional_t<Checked, mag_detail::Index, mag_detail::NoIndex> ix_;
+};
+using Mag = BasicMag<false>;
+using MagChecked = BasicMag<true>;
+
+namespace num {
+template <bool C> [[gnu::always_inline]] inline BasicMag<C> abs(const BasicMag<C>& x) { return x.absolute(); }
+template <bool C> inline std::int64_t floor_int(const BasicMag<C>& x) {
+  const double v = x.value();
+  if (!(std::fabs(v) < 0x1p62) || (x.magnitude() != 0 && !(std::fabs(v - std::nearbyint(v)) > x.threshold()))) {
+    BasicMag<C>::raise_uncertain();
+    return 0;
+  }
+  return static_cast<std::int64_t>(std::floor(v));
+}
+template <bool C> [[gnu::always_inline]] inline double to_double(const BasicMag<C>& x) { return x.value(); }
+template <bool C> [[gnu::always_inline]] inline BasicMag<C> select(bool c, const BasicMag<C>& a, const BasicMag<C>& b) { return BasicMag<C>::blend(c, a, b); }
+// Filtered traces record the double value; the decisions made from the bound are certified.
+template <bool C> inline std::string to_text(const BasicMag<C>& x) { return to_text(x.value()); }
+// An input that is not a double has no exact double to filter: the exact re-run decides (this
+// runs while inputs are prepared, outside any algorithm, so it may throw).
+template <> inline Mag from_rational<Mag>(const Rational& q) {
+  const double d = from_rational<double>(q);
+  if (num::to_rational(d) != q) throw Uncertain{};
+  return Mag(d);
+}
+template <> inline MagChecked from_rational<MagChecked>(const Rational& q) { return MagChecked(from_rational<Mag>(q).value()); }
+}  // namespace num
+
+}  // namespace sw
