@@ -39,12 +39,12 @@ class Interval {
   }
   friend Interval operator*(const Interval& a, const Interval& b) {
     double p1 = a.lo_ * b.lo_, p2 = a.lo_ * b.hi_, p3 = a.hi_ * b.lo_, p4 = a.hi_ * b.hi_;
-    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), a.is_point() && b.is_point() && std::fma(a.lo_, b.lo_, -p1) == 0);
+    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), a.is_point() && b.is_point() && exact_product(a.lo_, b.lo_, p1, p1));
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
     if (b.lo_ <= 0 && b.hi_ >= 0) throw Uncertain{};  // the divisor's sign is not known
     double p1 = a.lo_ / b.lo_, p2 = a.lo_ / b.hi_, p3 = a.hi_ / b.lo_, p4 = a.hi_ / b.hi_;
-    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), false);
+    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), a.is_point() && b.is_point() && exact_product(p1, b.lo_, a.lo_, a.lo_));
   }
   // Needs exact(x) >= 0 (the caller decided it); a lower end below 0 is rounding and clamps to 0.
   friend Interval sqrt(const Interval& x) {
@@ -78,6 +78,12 @@ class Interval {
     Interval r = hull(lo, hi);
     if (!exact) r.widen();
     return r;
+  }
+  // x y == p exactly, for a product p = fl(x y) or a quotient x = fl(p / y); `scale` is the
+  // product's size. The fma residual is exact unless it underflows, which a scale >= 2^-969 rules
+  // out (a zero factor makes the product exactly 0).
+  static bool exact_product(double x, double y, double p, double scale) {
+    return x == 0 || y == 0 ? p == 0 : std::fabs(scale) >= 0x1p-969 && std::fma(x, y, -p) == 0;
   }
   // Knuth's TwoSum: s = fl(a + b) is exact iff the rounding error it recovers is 0.
   static bool exact_sum(double a, double b, double s) {
