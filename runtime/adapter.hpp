@@ -19,7 +19,8 @@
 //             reserves (reserved memory costs nothing until touched; regrowth copies it all);
 //             using Filters = std::tuple<number types for filtered mode> (default Interval): the
 //             stages of the filter, cheapest first. Each must throw Uncertain when it cannot
-//             decide and have a NumericOf specialization = filtered; exact rationals follow last.
+//             decide, or raise its flag (Mag; see run_filter_stage), and have a NumericOf
+//             specialization = filtered; exact rationals follow last.
 #pragma once
 #include <chrono>
 #include <optional>
@@ -143,8 +144,8 @@ template <class Spec, class... S> struct LaterInputs<Spec, std::tuple<S...>> {
 
  private:
   template <class N> void fill(const std::vector<typename Spec::Input>& inputs) {
+    auto& column = std::get<Column<N>>(columns);
     for (const auto& in : inputs) {
-      auto& column = std::get<Column<N>>(columns);
       try {
         column.emplace_back(Spec::template prepare<N>(in));
       } catch (const Uncertain&) {

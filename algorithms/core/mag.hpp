@@ -10,7 +10,7 @@
 // algorithm on Mag clears the flag first and, when it is raised afterwards, discards the result
 // and re-runs the case on a later stage (run_filter_stage does both). After an undecided
 // comparison the algorithm runs on with an arbitrary answer, so an algorithm used with Mag must
-// stay bounded whatever its comparisons return (the ray tests are straight-line code).
+// stay bounded whatever its comparisons return (the ray algorithms are straight-line code).
 // The pair shares one SSE register, so a sum or a product is one packed instruction: the bound
 // costs nothing until a comparison reads it.
 //
@@ -30,6 +30,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace sw {
 
@@ -52,7 +53,9 @@ template <bool Checked> class BasicMag {
   // |v - exact| <= gamma_K M_exact <= gamma_K (1 + gamma_K) m for K <= kIndexBudget, below kC m.
   static constexpr double kC = kIndexBudget * 0x1p-53 * (1 + 0x1p-40);
   static constexpr double kMinInput = 0x1p-100, kMaxInput = 0x1p100;
-  static constexpr double kMinProduct = 0x1p-969;  // a product's magnitude (Checked): u * 2^-1022 / u
+  // A product's magnitude is 0 or at least this (Checked verifies it): an underflow's error,
+  // at most 2^-1075, is then below 2^-53 u m, inside the slack of kC.
+  static constexpr double kMinProduct = 0x1p-969;
 
   BasicMag() = default;
   [[gnu::always_inline]] BasicMag(double x) : p_{x, input_magnitude(x)} {}
@@ -108,7 +111,7 @@ template <bool Checked> class BasicMag {
     return make(reinterpret_cast<Pair>((reinterpret_cast<Bits>(a.p_) & mask) | (reinterpret_cast<Bits>(b.p_) & ~mask)), c ? a.index() : b.index());
   }
 
-  // Each comparison decides the exact sign of a - b or throws; the result is then the double
+  // Each comparison decides the exact sign of a - b or raises the flag; the result is the double
   // comparison itself, which the compiler can if-convert like plain double code.
   [[gnu::always_inline]] friend bool operator<(const BasicMag& a, const BasicMag& b) { return certain(a - b) < 0; }
   [[gnu::always_inline]] friend bool operator>(const BasicMag& a, const BasicMag& b) { return certain(a - b) > 0; }
