@@ -120,6 +120,11 @@ template <bool Checked> class BasicMag {
   [[gnu::always_inline]] friend bool operator==(const BasicMag& a, const BasicMag& b) { return certain(a - b) == 0; }
   [[gnu::always_inline]] friend bool operator!=(const BasicMag& a, const BasicMag& b) { return certain(a - b) != 0; }
 
+  [[gnu::always_inline]] static int sign_of(const BasicMag& x) {
+    const double v = certain(x);
+    return (v > 0) - (v < 0);
+  }
+
   // |x|: exact, so the magnitude and the index are kept.
   [[gnu::always_inline]] BasicMag absolute() const { return make(Pair{std::fabs(p_[0]), p_[1]}, index()); }
 
@@ -179,6 +184,8 @@ template <bool C> inline std::int64_t floor_int(const BasicMag<C>& x) {
   return static_cast<std::int64_t>(std::floor(v));
 }
 template <bool C> [[gnu::always_inline]] inline double to_double(const BasicMag<C>& x) { return x.value(); }
+// One decision instead of the generic two comparisons.
+template <bool C> [[gnu::always_inline]] inline int sign(const BasicMag<C>& x) { return BasicMag<C>::sign_of(x); }
 template <bool C> [[gnu::always_inline]] inline BasicMag<C> select(bool c, const BasicMag<C>& a, const BasicMag<C>& b) { return BasicMag<C>::blend(c, a, b); }
 // Filtered traces record the double value; the decisions made from the bound are certified.
 template <bool C> inline std::string to_text(const BasicMag<C>& x) { return to_text(x.value()); }

@@ -53,7 +53,7 @@ inline double to_double(const Rational& x) { return x.get_d(); }
 double to_double(const Interval& x);
 
 template <class T> T abs(const T& x) { return x < T(0) ? T(-x) : x; }
-template <class T> int sign(const T& x) { return (T(0) < x) - (x < T(0)); }
+template <class T> [[gnu::always_inline]] inline int sign(const T& x) { return (T(0) < x) - (x < T(0)); }
 // c ? a : b. Filtered types overload it to select without a branch; algorithms use it where the
 // choice depends on the data.
 template <class T> [[gnu::always_inline]] inline T select(bool c, const T& a, const T& b) { return c ? a : b; }

@@ -35,14 +35,15 @@ template <class Num, class Probe = NoProbe>
   if constexpr (Probe::on)
     probe.step(L::denom, StepKind::decide).num("den", den).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
         .geo(GeoKind::plane, p.x, p.y, p.z, n.x, n.y, n.z);
-  if (den == Num(0)) {
+  const int den_sign = num::sign(den);
+  if (den_sign == 0) {
     if constexpr (Probe::on) probe.step(L::parallel, StepKind::miss);
     return out;
   }
   // Deciding t's sign from num and den keeps the decision a polynomial sign (docs/accuracy-rays.md).
-  const Num num = dot(n, Vec3<Num>(p - r.o)), zero(0);
+  const Num num = dot(n, Vec3<Num>(p - r.o));
   if constexpr (Probe::on) probe.step(L::num, StepKind::decide).num("num", num);
-  if (num == zero || (num < zero) != (den < zero)) {
+  if (num::sign(num) != den_sign) {  // num = 0 included: den_sign != 0
     if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
     return out;
   }

@@ -54,8 +54,8 @@ template <class Num, class Probe = NoProbe>
   }
   // The signs of the roots follow from b' and cc, so only the reported root is divided out, and
   // the rest is branch-free (the outcome depends on the data).
-  const Num zero(0);
-  const bool near_hit = b_neg & (cc > zero), far_hit = b_neg | (cc < zero), far_is_qa = b_neg & !near_hit;
+  const int cc_sign = num::sign(cc);
+  const bool near_hit = b_neg & (cc_sign > 0), far_hit = b_neg | (cc_sign < 0), far_is_qa = b_neg & !near_hit;
   if constexpr (Probe::on) {
     const Num t_qa = Num(q / a), t_cq = Num(cc / q);
     probe.step(L::order, StepKind::decide).num("near", num::select(b_neg, t_cq, t_qa)).num("far", num::select(b_neg, t_qa, t_cq));

@@ -71,7 +71,8 @@ template <class Num, class Probe = NoProbe>
     }
   }
   const Num zero(0);
-  if ((u < zero || w_v < zero || w < zero) && (u > zero || w_v > zero || w > zero)) {
+  const int su = num::sign(u), sv = num::sign(w_v), sw = num::sign(w);
+  if ((su < 0 || sv < 0 || sw < 0) && (su > 0 || sv > 0 || sw > 0)) {
     if constexpr (Probe::on) probe.step(L::sides, StepKind::miss);
     return out;
   }
@@ -83,7 +84,7 @@ template <class Num, class Probe = NoProbe>
   }
   const Num t_num = Num(u * Num(sz * a[kz]) + w_v * Num(sz * b[kz]) + w * Num(sz * c[kz]));
   if constexpr (Probe::on) probe.step(L::depth, StepKind::decide).num("T", t_num);
-  if (t_num == zero || (t_num < zero) != (det < zero)) {
+  if (num::sign(t_num) != num::sign(det)) {  // T = 0 included: det != 0 here
     if constexpr (Probe::on) probe.step(L::sign, StepKind::miss);
     return out;
   }
