@@ -1,6 +1,7 @@
 // Filtered arithmetic: a double interval that surely contains the exact value. Every decision
-// (comparison, floor) is either certain or throws Uncertain; the caller then re-runs the whole
-// algorithm on exact rationals (see run_filter_stage). Same idea as CGAL's filtered predicates.
+// (comparison, floor) is either certain or throws Uncertain; the caller then re-runs the case on
+// the next stage, in the end exact rationals (run_filter_stage here, the chain in
+// runtime/adapter.hpp). Same idea as CGAL's filtered predicates.
 //
 // Included by number.hpp after its declarations; include number.hpp, not this file.
 #pragma once
