@@ -6,6 +6,7 @@
 // Included by number.hpp after its declarations; include number.hpp, not this file.
 #pragma once
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -80,11 +81,18 @@ class Interval {
     if (!exact) r.widen();
     return r;
   }
-  // x y == p exactly, for a product p = fl(x y) or a quotient x = fl(p / y); `scale` is the
-  // product's size. The fma residual is exact unless it underflows, which a scale >= 2^-969 rules
-  // out (a zero factor makes the product exactly 0).
+  // x y == p exactly, for a product p = fl(x y) or a quotient x = fl(p / y). Sufficient test,
+  // inline (an fma residual is a libm call without -mfma, which doubled the grid walk's cost):
+  // significands of at most 53 significant bits together multiply exactly. `scale`, the size of
+  // the product, keeps subnormals out; a zero factor makes the product exactly 0.
   static bool exact_product(double x, double y, double p, double scale) {
-    return x == 0 || y == 0 ? p == 0 : std::fabs(scale) >= 0x1p-969 && std::fma(x, y, -p) == 0;
+    if (x == 0 || y == 0) return p == 0;
+    return std::fabs(scale) >= 0x1p-969 && significant_bits(x) + significant_bits(y) <= 53 && x * y == p;
+  }
+  // The significant bits of a normal double's significand (trailing zeros dropped).
+  static int significant_bits(double x) {
+    const std::uint64_t m = (std::bit_cast<std::uint64_t>(x) & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+    return 53 - __builtin_ctzll(m);
   }
   // Knuth's TwoSum: s = fl(a + b) is exact iff the rounding error it recovers is 0.
   static bool exact_sum(double a, double b, double s) {
