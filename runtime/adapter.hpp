@@ -125,15 +125,18 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
   return with_number_type<Spec>(n, go);
 }
 
-// Inputs prepared ahead (outside the timing, as for every mode) for every filter stage and for
-// exact rationals; nullopt where a stage cannot take the input.
+// Inputs prepared ahead (outside the timing, as for every mode) for the filter stages after the
+// first (whose inputs the bench loop holds) and for exact rationals; nullopt where a stage cannot
+// take the input. Empty unless `needed` (filtered mode).
 template <class Spec, class Stages = typename FiltersOf<Spec>::type> struct LaterInputs;
 template <class Spec, class... S> struct LaterInputs<Spec, std::tuple<S...>> {
   template <class N> using Column = std::vector<std::optional<decltype(Spec::template prepare<N>(std::declval<const typename Spec::Input&>()))>>;
   std::tuple<Column<S>..., Column<Rational>> columns;
 
-  explicit LaterInputs(const std::vector<typename Spec::Input>& inputs) {
-    (fill<S>(inputs), ...);
+  LaterInputs(const std::vector<typename Spec::Input>& inputs, bool needed) {
+    if (!needed) return;
+    std::size_t stage = 0;
+    ((stage++ > 0 ? fill<S>(inputs) : void()), ...);
     fill<Rational>(inputs);
   }
   template <class N> const auto& at(std::size_t i) const {
@@ -210,7 +213,7 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
       std::vector<decltype(Spec::template prepare<Num>(set.inputs[0]))> prepared;
       for (const auto& in : set.inputs) prepared.push_back(Spec::template prepare<Num>(in));
       std::vector<Output> outs(prepared.size());
-      const LaterInputs<Spec> later(is_filtered<Num> ? set.inputs : std::vector<typename Spec::Input>{});
+      const LaterInputs<Spec> later(set.inputs, is_filtered<Num>);
       double best = 1e300;
       for (int r = 0; r < repeats; ++r) {
         row.fallbacks = row.later_stage = 0;
