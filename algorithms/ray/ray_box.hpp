@@ -25,7 +25,7 @@ struct RayBox {
       "    if d_k = 0:                                -- parallel to the slab (+0 or -0)",
       "        if o_k < min_k or o_k > max_k: miss; else next axis",
       "    t1 <- (min_k - o_k) / d_k; t2 <- (max_k - o_k) / d_k",
-      "    if t1 > t2: swap t1, t2",
+      "    if d_k < 0: swap t1, t2                    -- min_k <= max_k, so then t1 >= t2",
       "    t_near <- max(t_near, t1); t_far <- min(t_far, t2)",
       "if t_near > t_far: miss                        -- the slab intervals do not overlap",
       "if t_far <= 0: miss                            -- the box is behind",
@@ -43,8 +43,12 @@ template <class Num, class Probe = NoProbe>
         .geo(GeoKind::box3, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
   bool bounded = false;  // false while t_near and t_far are still -inf and +inf
   Num tn{}, tf{};
+#pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
-    if (r.d[k] == Num(0)) {
+    // One decision gives both the parallel case and the swap: min_k <= max_k, so the sign of d_k
+    // orders t1 and t2, and the rounded quotients keep that order (rounding is monotonic).
+    const int d_sign = num::sign(r.d[k]);
+    if (d_sign == 0) {
       const bool out_of_slab = r.o[k] < lo[k] || r.o[k] > hi[k];
       if constexpr (Probe::on) probe.step(L::flat, StepKind::decide).idx("k", k).idx("out", out_of_slab);
       if (out_of_slab) {
@@ -55,7 +59,7 @@ template <class Num, class Probe = NoProbe>
     }
     // The selections are branch-free (num::select): which way they go depends on the data.
     const Num ta = Num(Num(lo[k] - r.o[k]) / r.d[k]), tb = Num(Num(hi[k] - r.o[k]) / r.d[k]);
-    const bool flip = ta > tb;
+    const bool flip = d_sign < 0;
     const Num t1 = num::select(flip, tb, ta), t2 = num::select(flip, ta, tb);
     if (!bounded) {
       tn = t1, tf = t2, bounded = true;
