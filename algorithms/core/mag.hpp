@@ -27,6 +27,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <emmintrin.h>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -68,6 +69,11 @@ template <bool Checked> class BasicMag {
 
   double value() const { return p_[0]; }
   double magnitude() const { return p_[1]; }
+  // The error index (tracked by Checked only; 0 otherwise).
+  [[gnu::always_inline]] int index() const {
+    if constexpr (Checked) return ix_.k;
+    else return 0;
+  }
   // The decision threshold for this value: |v| above it means the sign of v is the exact sign.
   double threshold() const { return kC * p_[1] - 0x1p-1074; }
 
@@ -77,29 +83,30 @@ template <bool Checked> class BasicMag {
   [[gnu::always_inline]] friend BasicMag operator*(const BasicMag& a, const BasicMag& b) {
     return product(a.p_ * b.p_, a.index() + b.index() + 1);
   }
-  // Needs |v_b| > 2 kC m_b (b's sign certain with room to spare); else the quotient's magnitude is
-  // NaN. Then |q - exact| <= gamma_{ka+kb+4} m_q with m_q = 2 m_a m_b / v_b^2 (for an input b,
-  // 2 m_a / |v_b|).
+  // Needs |v_b| > 2 kC m_b (b's sign certain with room to spare); else it raises the flag. Then
+  // |q - exact| <= gamma_{ka+kb+4} m_q with m_q = 2 m_a m_b / v_b^2 (for an input b, 2 m_a / |v_b|).
   [[gnu::always_inline]] friend BasicMag operator/(const BasicMag& a, const BasicMag& b) {
     const double vb = b.p_[0], mb = b.p_[1];
-    // One packed division for both lanes (the divider is the bottleneck); branch-free (a select,
-    // then a NaN added or not), so that a hit path ending in a division can still be
-    // if-converted.
-    const double poison = std::fabs(vb) > 2 * kC * mb ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-    return product(a.p_ * Pair{1, 2 * mb} / Pair{vb, vb * vb} + Pair{0, poison}, a.index() + b.index() + 4);
+    // An unguarded divisor raises the flag, like an undecided comparison (the case is re-run on
+    // the next stage). One packed division for both lanes: the divider is the bottleneck.
+    if (!(std::fabs(vb) > 2 * kC * mb)) [[unlikely]] raise_uncertain();
+    return product(a.p_ * Pair{1, 2 * mb} / Pair{vb, vb * vb}, a.index() + b.index() + 4);
   }
   BasicMag& operator+=(const BasicMag& b) { return *this = *this + b; }
   BasicMag& operator-=(const BasicMag& b) { return *this = *this - b; }
   BasicMag& operator*=(const BasicMag& b) { return *this = *this * b; }
 
-  // Needs exact(x) >= 0 (the caller decided it). |sqrt v - sqrt exact| <= |v - exact| / sqrt v, so
-  // m_s = m_x / sqrt(v_x) with one more rounding; a radicand of 0 is exact only when m_x = 0. A
-  // negative v means the caller found x < 0 (or its decision was undecided and the flag is up)
-  // and discards the root: it is 0, exactly, so that deciding on it raises nothing.
+  // Needs exact(x) >= 0 (the caller decided it). Then |sqrt v - sqrt exact| <= sqrt|v - exact| <
+  // sqrt(kC m_x), so one packed square root of (v, 2^106 kC m_x) gives the root and, with the root
+  // added, m_s = sqrt v + sqrt(kC m_x) / u; the root's index is 3 whatever x's was (proof:
+  // docs/accuracy-rays.md). No division, unlike m_x / sqrt v. A negative v means the caller found
+  // x < 0 (or the flag is up) and discards the root; the max with 0 keeps it from being NaN (and
+  // keeps a NaN m, as max returns its second operand then).
   [[gnu::always_inline]] friend BasicMag sqrt(const BasicMag& x) {
-    const double v = x.p_[0], m = x.p_[1], s = std::sqrt(v > 0 ? v : 0.0);
-    const double ms = v > 0 ? m / s : (v < 0) | (m == 0) ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-    return product(Pair{s, ms}, x.index() + 1);
+    if constexpr (Checked)
+      if (x.index() > kIndexBudget) throw std::logic_error("Mag: a square root's radicand of index " + std::to_string(x.index()) + " exceeds the budget");
+    const Pair r = reinterpret_cast<Pair>(_mm_sqrt_pd(_mm_max_pd(__m128d{0, 0}, reinterpret_cast<__m128d>(x.p_ * Pair{1, kC * 0x1p106}))));
+    return product(r + Pair{0, r[0]}, 3);
   }
 
   // c ? a : b without a branch (a bitwise blend of both lanes), for selections that depend on the
@@ -137,10 +144,6 @@ template <bool Checked> class BasicMag {
   }
   [[gnu::always_inline]] static Pair flip_value(Pair p) {
     return reinterpret_cast<Pair>(reinterpret_cast<mag_detail::PairBits>(p) ^ mag_detail::PairBits{INT64_MIN, 0});
-  }
-  [[gnu::always_inline]] int index() const {
-    if constexpr (Checked) return ix_.k;
-    else return 0;
   }
   [[gnu::always_inline]] static int sum_index(const BasicMag& a, const BasicMag& b) { return (a.index() > b.index() ? a.index() : b.index()) + 1; }
   [[gnu::always_inline]] static BasicMag make(Pair p, int k) {

@@ -13,9 +13,9 @@ struct RaySphereQuadratic {
       "f <- o - c; a <- d . d; b <- 2 f . d; cc <- f . f - r^2",
       "D <- b^2 - 4 a cc",
       "if D < 0: miss",
-      "t0 <- (-b - sqrt(D)) / 2a; t1 <- (-b + sqrt(D)) / 2a",
-      "if t0 > 0: hit at t0",
-      "if t1 > 0: hit at t1",
+      "n0 <- -b - sqrt(D); n1 <- -b + sqrt(D)       -- the roots are t0 = n0 / 2a <= t1 = n1 / 2a",
+      "if n0 > 0: hit at t0                         -- 2a > 0, so t0 has n0's sign",
+      "if n1 > 0: hit at t1",
       "miss                                         -- the sphere is behind",
   };
   static constexpr Listing listing() { return {"Quadratic ray-sphere", lines}; }
@@ -38,14 +38,14 @@ template <class Num, class Probe = NoProbe>
   }
   const Num two_a = Num(Num(2) * a), nb = Num(-b);
   bool e0 = true, e1 = true;
-  const Num t0 = Num(add_root(nb, -1, disc, e0) / two_a), t1 = Num(add_root(nb, 1, disc, e1) / two_a);
-  if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("t0", t0).num("t1", t1);
-  // Branch-free from here (the outcome depends on the data).
-  const bool near_hit = t0 > Num(0), far_hit = t1 > Num(0);
-  out = {bool(near_hit | far_hit), num::select(near_hit, t0, t1), near_hit ? e0 : e1};
+  const Num n0 = add_root(nb, -1, disc, e0), n1 = add_root(nb, 1, disc, e1);
+  if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("t0", Num(n0 / two_a)).num("t1", Num(n1 / two_a));
+  // Branch-free from here (the outcome depends on the data); only the reported root is divided.
+  const bool near_hit = n0 > Num(0), far_hit = n1 > Num(0);
+  out = {bool(near_hit | far_hit), Num(num::select(near_hit, n0, n1) / two_a), near_hit ? e0 : e1};
   if constexpr (Probe::on) {
-    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + t0 * r.d));
-    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + t1 * r.d));
+    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
+    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
     else probe.step(L::none, StepKind::miss);
   }
   return out;
