@@ -56,7 +56,9 @@ template <class T> T abs(const T& x) { return x < T(0) ? T(-x) : x; }
 template <class T> [[gnu::always_inline]] inline int sign(const T& x) { return (T(0) < x) - (x < T(0)); }
 // c ? a : b. Filtered types overload it to select without a branch; algorithms use it where the
 // choice depends on the data.
-template <class T> [[gnu::always_inline]] inline T select(bool c, const T& a, const T& b) { return c ? a : b; }
+template <class T> [[gnu::always_inline]] inline T select(bool c, const T& a, const T& b) {
+  return __builtin_expect_with_probability(c, true, 0.5) ? a : b;
+}
 
 // Converts an exact input value to T, rounding to nearest (ties to even) for float and double.
 template <class T> T from_rational(const Rational& q);
