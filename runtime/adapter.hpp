@@ -176,7 +176,7 @@ template <class Spec> [[gnu::noinline]] typename Spec::Output bench_later_stages
 // first stage needs no try block in the loop, and assigning to out directly (rather than returning
 // one of two results) keeps the output out of a stack temporary.
 template <class Spec, class Num>
-void bench_one(const auto& prepared, const LaterInputs<Spec>& later, std::size_t i, typename Spec::Output& out, BenchRow& row) {
+[[gnu::always_inline]] inline void bench_one(const auto& prepared, const LaterInputs<Spec>& later, std::size_t i, typename Spec::Output& out, BenchRow& row) {
   NoProbe none;
   if constexpr (requires { Num::uncertain(); }) {
     Num::clear_uncertain();
