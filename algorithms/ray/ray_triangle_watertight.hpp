@@ -32,7 +32,7 @@ struct RayTriangleWatertight {
       "det <- U + V + W; if det = 0: miss                      -- the ray is parallel to the plane",
       "T <- U Sz A_kz + V Sz B_kz + W Sz C_kz",
       "if T = 0 or sign(T) != sign(det): miss                 -- t = T/det must be > 0",
-      "hit: t <- T / det; b <- (U, V, W) / det",
+      "hit: r <- 1 / det; t <- T r; b <- (U r, V r, W r)",
   };
   static constexpr Listing listing() { return {"Watertight ray-triangle", lines}; }
 };
@@ -70,7 +70,6 @@ template <class Num, class Probe = NoProbe>
       if constexpr (Probe::on) probe.step(L::retry, StepKind::decide).num("U", u).num("V", w_v).num("W", w);
     }
   }
-  const Num zero(0);
   const int su = num::sign(u), sv = num::sign(w_v), sw = num::sign(w);
   if ((su < 0 || sv < 0 || sw < 0) && (su > 0 || sv > 0 || sw > 0)) {
     if constexpr (Probe::on) probe.step(L::sides, StepKind::miss);
@@ -78,19 +77,22 @@ template <class Num, class Probe = NoProbe>
   }
   const Num det = Num(u + w_v + w);
   if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
-  if (det == zero) {
+  const int det_sign = num::sign(det);
+  if (det_sign == 0) {
     if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
     return out;
   }
   const Num t_num = Num(u * Num(sz * a[kz]) + w_v * Num(sz * b[kz]) + w * Num(sz * c[kz]));
   if constexpr (Probe::on) probe.step(L::depth, StepKind::decide).num("T", t_num);
-  if (num::sign(t_num) != num::sign(det)) {  // T = 0 included: det != 0 here
+  if (num::sign(t_num) != det_sign) {  // T = 0 included: det != 0 here
     if constexpr (Probe::on) probe.step(L::sign, StepKind::miss);
     return out;
   }
+  // One division, as in the paper: the reciprocal scales t and the three weights.
+  const Num inv_det = Num(Num(1) / det);
   out.hit = true;
-  out.t = Num(t_num / det);
-  out.b = {Num(u / det), Num(w_v / det), Num(w / det)};
+  out.t = Num(t_num * inv_det);
+  out.b = {Num(u * inv_det), Num(w_v * inv_det), Num(w * inv_det)};
   if constexpr (Probe::on) {
     const Vec3<Num> p = r.o + out.t * r.d;
     probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p);
