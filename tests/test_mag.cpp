@@ -86,7 +86,7 @@ double random_input(std::mt19937_64& rng) {
 
 }  // namespace
 
-TEST_CASE("Mag: every operation's value stays within kC m of the exact value; certain signs are exact", "[mag]") {
+TEST_CASE("Mag: every operation stays within its bound of the exact value, and certain signs are exact", "[mag]") {
   std::mt19937_64 rng(20261122);
   int nodes = 0, decided = 0, wrong_sign = 0, guarded = 0, roots = 0;
   for (int trial = 0; trial < 1500; ++trial) {

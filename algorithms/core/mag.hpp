@@ -27,11 +27,14 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
-#include <emmintrin.h>
+#include <emmintrin.h>  // the square root's packed sqrtpd and maxpd; SSE2 is baseline on x86-64
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#if !defined(__SSE2__)
+#error "Mag needs SSE2 (x86-64)"
+#endif
 
 namespace sw {
 

@@ -54,8 +54,9 @@ double to_double(const Interval& x);
 
 template <class T> T abs(const T& x) { return x < T(0) ? T(-x) : x; }
 template <class T> [[gnu::always_inline]] inline int sign(const T& x) { return (T(0) < x) - (x < T(0)); }
-// c ? a : b. Filtered types overload it to select without a branch; algorithms use it where the
-// choice depends on the data.
+// c ? a : b, where the choice depends on the data. Filtered types overload it with a bitwise
+// blend; here GCC is told that c is unpredictable, so that it prefers a blend to a branch (it still
+// branches in some contexts).
 template <class T> [[gnu::always_inline]] inline T select(bool c, const T& a, const T& b) {
   return __builtin_expect_with_probability(c, true, 0.5) ? a : b;
 }
