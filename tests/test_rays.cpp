@@ -447,7 +447,7 @@ TEST_CASE("rays: exact step replay, every variable", "[rays]") {
             if (m.count(name)) want = m.at(name);
             if (name == "D") want = id == "ray-sphere-quadratic" ? Rational(4 * (a * r2 - fxd2)) : Rational(a * r2 - fxd2);
             // Roots: they must satisfy Vieta's formulas with the other recorded root (checked below).
-            if (name == "t0" || name == "t1" || name == "near" || name == "far" || name == "q") approx = true;
+            if (name == "t0" || name == "t1" || name == "n0" || name == "n1" || name == "near" || name == "far" || name == "q") approx = true;
             if (name == "t") {
               const auto o = oracle::ray_sphere(p.o, p.d, p.v[0], p.r);
               REQUIRE(o.hit);
@@ -485,7 +485,8 @@ TEST_CASE("rays: exact step replay, every variable", "[rays]") {
           ++checked;
         }
       }
-      // Sphere roots recorded as pairs: Vieta (t0 t1 = c/a, t0 + t1 = -b/a) on the exact inputs.
+      // Sphere roots recorded as pairs: Vieta (t0 t1 = c/a, t0 + t1 = -b/a) on the exact inputs, and
+      // the quadratic's numerators n = 2a t.
       if (prim == "sphere") {
         std::map<std::string, Rational> v;
         for (std::size_t s = 0; s < tr.size(); ++s)
@@ -497,6 +498,10 @@ TEST_CASE("rays: exact step replay, every variable", "[rays]") {
             CHECK(close(v[x] * v[y], cc / a));
             CHECK(close(v[x] + v[y], -2 * hb / a));
           }
+        if (v.count("n0")) {  // n0 n1 = b^2 - D = 4 a cc, n0 + n1 = -2b
+          CHECK(close(v["n0"] * v["n1"], 4 * a * cc));
+          CHECK(close(v["n0"] + v["n1"], -4 * hb));
+        }
         if (v.count("q")) CHECK(close((v["q"] + hb) * (v["q"] + hb), Rational(a * p.r * p.r - dotq(crossq(f, p.d), crossq(f, p.d)))));
       }
     }
