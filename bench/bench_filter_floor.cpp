@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "core/number.hpp"
+#include "input.hpp"
 #include "ray/ray_box.hpp"
 #include "ray/ray_plane.hpp"
 #include "ray/ray_sphere_geometric.hpp"
@@ -78,16 +79,16 @@ struct Out {
   double t, t_near, t_far;
 };
 
-Vec3<double> vec(const Json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+Vec3<double> vec(const Json& obj, const char* key) { return to_num<double>(parse_point3(obj, key)); }
 
 std::vector<Case<double>> random_set(Test t) {
   const char* prim = t == plane ? "plane" : t == box ? "box" : "sphere";
   std::vector<Case<double>> out;
   for (const Json& j : rays::random_inputs(prim, 10000, 20261122)) {
-    Case<double> c{{vec(j["ray"]["o"]), vec(j["ray"]["d"])}, {}, {}, 0};
-    if (t == plane) c.a = vec(j["plane"]["p"]), c.b = vec(j["plane"]["n"]);
-    else if (t == box) c.a = vec(j["box"]["min"]), c.b = vec(j["box"]["max"]);
-    else c.a = vec(j["sphere"]["c"]), c.r = j["sphere"]["r"].get<double>();
+    Case<double> c{{vec(j["ray"], "o"), vec(j["ray"], "d")}, {}, {}, 0};
+    if (t == plane) c.a = vec(j["plane"], "p"), c.b = vec(j["plane"], "n");
+    else if (t == box) c.a = vec(j["box"], "min"), c.b = vec(j["box"], "max");
+    else c.a = vec(j["sphere"], "c"), c.r = j["sphere"]["r"].get<double>();
     out.push_back(c);
   }
   return out;
