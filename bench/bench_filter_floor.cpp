@@ -11,12 +11,12 @@
 #include <vector>
 #include "core/number.hpp"
 #include "input.hpp"
-#include "ray/ray_box.hpp"
-#include "ray/ray_plane.hpp"
-#include "ray/ray_sphere_geometric.hpp"
-#include "ray/ray_sphere_quadratic.hpp"
-#include "ray/ray_sphere_stable.hpp"
-#include "rays_cases.hpp"
+#include "rays/ray_box.hpp"
+#include "rays/ray_plane.hpp"
+#include "rays/ray_sphere_geometric.hpp"
+#include "rays/ray_sphere_quadratic.hpp"
+#include "rays/ray_sphere_stable.hpp"
+#include "rays/cases.hpp"
 
 namespace sw {
 

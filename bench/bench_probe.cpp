@@ -8,8 +8,8 @@
 #include "catalog.hpp"
 #include "core/jsonl_probe.hpp"
 #include "core/probe.hpp"
-#include "raster/bresenham_line.hpp"
-#include "raster/dda_line.hpp"
+#include "lines/bresenham_line.hpp"
+#include "lines/dda_line.hpp"
 
 using namespace sw;
 
@@ -86,7 +86,7 @@ void BM_dda_hand_loop(benchmark::State& state) {
 void BM_dda_untraced(benchmark::State& state) {
   const auto segs = segments<double>(false);
   NoProbe none;
-  pixels_loop(state, [&](auto& out) { for (const auto& s : segs) raster::dda_line<double>(s[0], s[1], out, none); });
+  pixels_loop(state, [&](auto& out) { for (const auto& s : segs) lines::dda_line<double>(s[0], s[1], out, none); });
 }
 void BM_bresenham_hand_loop(benchmark::State& state) {
   const auto segs = segments<std::int64_t>(true);
@@ -95,7 +95,7 @@ void BM_bresenham_hand_loop(benchmark::State& state) {
 void BM_bresenham_untraced(benchmark::State& state) {
   const auto segs = segments<std::int64_t>(true);
   NoProbe none;
-  pixels_loop(state, [&](auto& out) { for (const auto& s : segs) raster::bresenham_line<std::int64_t>(s[0], s[1], out, none); });
+  pixels_loop(state, [&](auto& out) { for (const auto& s : segs) lines::bresenham_line<std::int64_t>(s[0], s[1], out, none); });
 }
 
 // Recorder: ns per recorded step. Arg 0: a fresh recorder each time (growth and page faults
@@ -111,7 +111,7 @@ template <class Num> void BM_dda_recorder(benchmark::State& state) {
     rec.clear();
     for (const auto& s : segs) {
       out.clear();
-      raster::dda_line<Num>(s[0], s[1], out, rec);
+      lines::dda_line<Num>(s[0], s[1], out, rec);
     }
     steps += rec.size();
     benchmark::DoNotOptimize(rec.size());
@@ -129,7 +129,7 @@ template <class Num> void BM_dda_jsonl(benchmark::State& state) {
     JsonlProbe<Num> probe(sink);
     for (const auto& s : segs) {
       out.clear();
-      raster::dda_line<Num>(s[0], s[1], out, probe);
+      lines::dda_line<Num>(s[0], s[1], out, probe);
     }
     probe.finish();
     steps += probe.count();

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include "rays_cases.hpp"
-#include "ray/ray_box.hpp"
-#include "ray/ray_triangle_mt.hpp"
-#include "ray/ray_triangle_watertight.hpp"
+#include "rays/cases.hpp"
+#include "rays/ray_box.hpp"
+#include "rays/ray_triangle_mt.hpp"
+#include "rays/ray_triangle_watertight.hpp"
 #ifdef SW_HAVE_EMBREE
 #include <embree3/rtcore.h>
 #include "rays_oracle.hpp"

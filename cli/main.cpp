@@ -55,6 +55,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   auto* list = app.add_subcommand("list", "One line per algorithm: its id and what it does");
+  bool list_markdown = false;
+  std::string list_listing;
+  list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
+  list->add_option("--listing", list_listing, "Print one algorithm's listing: line id, name and text");
 
   std::string alg_id, input_arg, numeric = "double", out_path, inputs_path, trace_path;
   bool decisions_only = false, json = false;
@@ -104,6 +108,17 @@ int main(int argc, char** argv) {
     if (*render) return sw::vis::run_render(render_opts);
 #endif
     if (*list) {
+      if (list_markdown) {
+        std::cout << catalog_markdown();
+        return 0;
+      }
+      if (!list_listing.empty()) {
+        const Algorithm& alg = find_algorithm(list_listing);
+        std::printf("%s\n", std::string(alg.listing.title).c_str());
+        for (std::size_t i = 0; i < alg.listing.lines.size(); ++i)
+          std::printf("%2zu %-14s %s\n", i + 1, std::string(alg.listing.lines[i].name).c_str(), std::string(alg.listing.lines[i].text).c_str());
+        return 0;
+      }
       for (const Algorithm& a : catalog()) std::printf("%-26s %s\n", std::string(a.id).c_str(), std::string(a.summary).c_str());
       return 0;
     }

@@ -1,6 +1,6 @@
 // Exact specifications of the line family, stated directly (no incremental stepping), on CGAL's
-// GMP rationals. The algorithms in algorithms/raster/ are checked against these.
-// Conventions (docs/semantics/lines.md): pixel (i, j) is [i-1/2, i+1/2) x [j-1/2, j+1/2); the
+// GMP rationals. The algorithms in algorithms/lines/ are checked against these.
+// Conventions (docs/lines/semantics.md): pixel (i, j) is [i-1/2, i+1/2) x [j-1/2, j+1/2); the
 // segment p0 -> p1 holds p0 and not p1; round(v) = floor(v + 1/2); |dx| = |dy| steps rows.
 #pragma once
 #include <vector>

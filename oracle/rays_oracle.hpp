@@ -1,5 +1,5 @@
-// Exact specifications of the ray family, stated independently of algorithms/ray/ (on CGAL's GMP
-// rationals and MPFR). Semantics (docs/semantics/rays.md): a hit is o + t d with t > 0 on the closed
+// Exact specifications of the ray family, stated independently of algorithms/rays/ (on CGAL's GMP
+// rationals and MPFR). Semantics (docs/rays/semantics.md): a hit is o + t d with t > 0 on the closed
 // primitive; the smallest such t is reported (for the box and the sphere: the first surface point).
 //  - triangle: exact orient3d of the ray's line against each edge, and of the origin against the
 //    plane; a ray in the triangle's plane misses;

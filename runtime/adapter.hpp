@@ -2,6 +2,7 @@
 //
 // A Spec provides:
 //   using Algo = <the listing struct>;  static constexpr std::string_view family;
+//   static constexpr std::array<View, N> views;              // what the visualizer draws
 //   static constexpr std::array<Numeric, N> numerics;
 //   static inline const std::string example;                 // default input, JSON text
 //   struct Input;  struct Output (with ==);
@@ -249,6 +250,7 @@ template <class Spec> Algorithm make_algorithm() {
   a.family = Spec::family;
   a.summary = Spec::Algo::summary;
   a.listing = Spec::Algo::listing();
+  a.views.assign(Spec::views.begin(), Spec::views.end());
   a.numerics.assign(Spec::numerics.begin(), Spec::numerics.end());
   a.example = Spec::example;
   auto result = [](const auto& out, Numeric n, bool fell_back) {

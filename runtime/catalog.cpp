@@ -11,6 +11,7 @@ const std::vector<Algorithm>& catalog() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> v;
     register_lines(v);
+    register_curves(v);
     register_rays(v);
     return v;
   }();
@@ -33,6 +34,16 @@ Numeric parse_numeric_for(const Algorithm& alg, std::string_view name) {
   if (!alg.supports(*n))
     throw InputError(std::string(alg.id) + " does not run on '" + std::string(name) + "' (it runs on: " + modes + ")");
   return *n;
+}
+
+std::string catalog_markdown() {
+  std::string out = "| family | id | what | modes |\n|---|---|---|---|\n";
+  for (const Algorithm& a : catalog()) {
+    std::string modes;
+    for (Numeric n : a.numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
+    out += "| " + std::string(a.family) + " | `" + std::string(a.id) + "` | " + std::string(a.summary) + " | " + modes + " |\n";
+  }
+  return out;
 }
 
 }  // namespace sw

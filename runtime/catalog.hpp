@@ -32,9 +32,17 @@ struct Recorded {
   Json result;
 };
 
+// The views an algorithm declares; the visualizer builds its canvas from the first one it has.
+enum class View : std::uint8_t {
+  plane2d,  // pixels and 2D geometry over a grid
+  orbit3d,  // 3D geometry under an orbit camera
+};
+constexpr std::string_view view_name(View v) { return v == View::plane2d ? "plane2d" : "orbit3d"; }
+
 struct Algorithm {
   std::string_view id, family, summary;
   Listing listing;
+  std::vector<View> views;
   std::vector<Numeric> numerics;  // the number types this algorithm runs on
   std::string example;            // a default input, as JSON text
   // All of these validate the input first and throw InputError naming the problem.
@@ -59,8 +67,12 @@ const Algorithm& find_algorithm(std::string_view id);
 // Throws InputError for an unknown name or one the algorithm does not run on.
 Numeric parse_numeric_for(const Algorithm& alg, std::string_view name);
 
-// Families register themselves here.
+// The README's algorithm table: one row per algorithm, grouped by family, with its modes.
+std::string catalog_markdown();
+
+// Families register themselves here (catalog.cpp calls each once, in this order).
 void register_lines(std::vector<Algorithm>& out);
+void register_curves(std::vector<Algorithm>& out);
 void register_rays(std::vector<Algorithm>& out);
 
 }  // namespace sw

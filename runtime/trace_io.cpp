@@ -145,7 +145,9 @@ bool step_agrees(const Json& want, const Json& got, bool decisions_only) {
     const std::string name = first.key();
     const Json& values = first.value();
     if (!gg[k].is_object() || gg[k].size() != 1 || !gg[k].contains(name)) return false;
-    if (decisions_only && name != "pixel") continue;
+    const auto kind = parse_geo(name);
+    if (!kind) return false;
+    if (decisions_only && !geo_desc(*kind).decision) continue;  // the vocabulary's rule
     if (!same_value(values, gg[k][name])) return false;
   }
   return true;

@@ -69,7 +69,7 @@ void check_texture(const MemoryTextures& tex, const PixelLayer& layer, const Tra
 TEST_CASE("visualizer lesson: front matter, narration keys and the manifest", "[visualizer][lesson]") {
   const Lesson l = parse_lesson(
       "---\ntitle: T\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[5,2]}\nnumeric: exact\ncompare: float\nstep: 3\n---\n"
-      "Intro text.\n\n## on line 8\nPlot here.\n## on kind advance\nMove.\n",
+      "Intro text.\n\n## on line plot\nPlot here.\n## on kind advance\nMove.\n",
       "t.md");
   CHECK(l.title == "T");
   CHECK(l.algorithm->id == "dda-line");

@@ -66,9 +66,10 @@ std::string App::load(const Algorithm& alg, const Json& input, Numeric numeric, 
   alg_ = &alg, input_ = input, numeric_ = numeric, compare_ = compare;
   a_ = std::move(a), b_ = std::move(b);
   stats_ = b_ ? std::optional(compare_traces(*a_, *b_)) : std::nullopt;
-  if (family_ != alg.family || !canvases_[0]) {
-    family_ = std::string(alg.family);
-    for (auto& c : canvases_) c = make_canvas(family_, *textures_);
+  const View view = alg.views.empty() ? View::plane2d : alg.views.front();
+  if (view_ != view || !canvases_[0]) {
+    view_ = view;
+    for (auto& c : canvases_) c = make_canvas(view_, *textures_);
   }
   if (!keep_view) {
     canvases_[0]->fit();
@@ -266,7 +267,7 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
 void App::draw_compare_strip() {
   const CompareStats& s = *stats_;
   const std::string na(numeric_name(numeric_)), nb(numeric_name(*compare_));
-  if (family_ == "raster") {
+  if (view_ == View::plane2d) {
     ImGui::Text("%s: %zu steps, %zu pixels    %s: %zu steps, %zu pixels    ", na.c_str(), s.steps_a, s.pixels_a, nb.c_str(), s.steps_b, s.pixels_b);
     ImGui::SameLine();
     ImGui::TextColored(s.pixel_mismatches ? theme::kError : theme::kGood, "%zu mismatched pixels", s.pixel_mismatches);

@@ -81,7 +81,7 @@ class App {
   std::shared_ptr<const TraceModel> a_, b_;
   std::optional<CompareStats> stats_;
   std::array<std::unique_ptr<Canvas>, 2> canvases_;
-  std::string family_;
+  View view_ = View::plane2d;  // the canvas kind now shown
 
   // Timeline.
   std::size_t step_ = 0;

@@ -1,6 +1,5 @@
-// The canvas behind a small interface, one kind per algorithm family: "raster" draws the pixel
-// grid (pixel_canvas.cpp); other families get a placeholder until their view exists (a 3D view
-// for "ray" slots in here through make_canvas).
+// The canvas behind a small interface, one kind per view an algorithm declares: plane2d draws the
+// pixel grid and 2D geometry (pixel_canvas.cpp), orbit3d the 3D scene (ray_canvas.cpp).
 #pragma once
 #include <array>
 #include <memory>
@@ -48,6 +47,7 @@ class Canvas {
   virtual std::optional<std::array<float, 4>> cell_rect(Pixel) const { return std::nullopt; }
 };
 
-std::unique_ptr<Canvas> make_canvas(std::string_view family, TextureHost& textures);
+// The canvas for an algorithm's first declared view.
+std::unique_ptr<Canvas> make_canvas(View view, TextureHost& textures);
 
 }  // namespace sw::vis

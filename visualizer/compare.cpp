@@ -15,9 +15,10 @@ bool same_decisions(const TraceView& a, const TraceView& b, std::size_t s) {
   }
   for (std::uint32_t k = 0; k < x.geo_end - x.geo_begin; ++k) {
     const GeoRecord &g = a.geo_at(x.geo_begin + k), &h = b.geo_at(y.geo_begin + k);
-    if (g.kind != h.kind) return false;
-    if (g.kind == GeoKind::pixel && (a.int_value(g.slot) != b.int_value(h.slot) || a.int_value(g.slot + 1) != b.int_value(h.slot + 1)))
-      return false;
+    if (g.kind != h.kind || g.count != h.count) return false;
+    if (geo_desc(g.kind).decision)  // the vocabulary's rule, as in `check --decisions-only`
+      for (std::uint32_t c = 0; c < g.count; ++c)
+        if (a.int_value(g.slot + c) != b.int_value(h.slot + c)) return false;
   }
   return true;
 }

@@ -24,7 +24,7 @@ std::vector<std::string> split_lines(const std::string& text) {
   return lines;
 }
 
-// "## on line 6", "## on kind plot", "## intro" -> a Narration key.
+// "## on line plot", "## on kind plot", "## intro" -> a Narration key.
 Narration parse_heading(const std::string& heading, const Algorithm& alg, const std::string& at) {
   Narration n;
   std::istringstream in(heading);
@@ -33,15 +33,16 @@ Narration parse_heading(const std::string& heading, const Algorithm& alg, const 
   if (word == "intro") return n;
   in >> what >> value;
   if (word != "on" || value.empty())
-    throw InputError(at + ": section '## " + heading + "' is not '## intro', '## on line N' or '## on kind K'");
+    throw InputError(at + ": section '## " + heading + "' is not '## intro', '## on line NAME' or '## on kind K'");
   if (what == "line") {
-    std::uint32_t line = 0;
-    auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), line);
-    if (ec != std::errc() || p != value.data() + value.size() || line < 1 || line > alg.listing.lines.size())
-      throw InputError(at + ": '" + value + "' is not a listing line of " + std::string(alg.id) + " (1.." +
-                       std::to_string(alg.listing.lines.size()) + ")");
+    // Lines are addressed by name, so that inserting a listing line never shifts a lesson.
+    n.line = alg.listing.find(value);
+    if (n.line == 0) {
+      std::string names;
+      for (const ListingLine& l : alg.listing.lines) names += (names.empty() ? "" : ", ") + std::string(l.name);
+      throw InputError(at + ": '" + value + "' is not a listing line name of " + std::string(alg.id) + " (" + names + ")");
+    }
     n.key = Narration::Key::line;
-    n.line = line;
     return n;
   }
   if (what == "kind") {

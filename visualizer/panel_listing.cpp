@@ -22,7 +22,7 @@ void App::draw_listing(ImVec2 pos, ImVec2 size) {
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const bool current = i + 1 == line;
     // Code, then its "-- comment": on the same row when it fits, else wrapped below, dimmed.
-    std::string_view text = lines[i], comment;
+    std::string_view text = lines[i].text, comment;
     if (auto c = text.find("--"); c != std::string_view::npos) {
       comment = text.substr(c);
       text = text.substr(0, c);

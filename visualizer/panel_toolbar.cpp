@@ -111,7 +111,7 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     } else if (a_) {
       ImGui::SameLine(0, 16);
       const bool segment = !endpoint_text_[0].empty() || !endpoint_text_[2].empty();
-      if (family_ == "ray") ImGui::TextDisabled("%zu steps%s", a_->size(), input_.contains("ray") ? "; drag o or o + d on the canvas" : "");
+      if (view_ == View::orbit3d) ImGui::TextDisabled("%zu steps%s", a_->size(), input_.contains("ray") ? "; drag o or o + d on the canvas" : "");
       else ImGui::TextDisabled("%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment ? "; drag p0 or p1 on the canvas" : "");
     }
   }

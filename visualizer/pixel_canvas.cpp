@@ -242,32 +242,14 @@ void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
 
 namespace {
 
-// Families without a view yet still get the listing, state and timeline; the canvas says so.
-class PlaceholderCanvas final : public Canvas {
- public:
-  explicit PlaceholderCanvas(std::string_view family) : family_(family) {}
-  CanvasEvents draw(const CanvasInput&, ImVec2 size) override {
-    const ImVec2 o = ImGui::GetCursorScreenPos();
-    ImGui::InvisibleButton("##canvas", ImVec2(std::max(size.x, 16.f), std::max(size.y, 16.f)));
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    dl->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), theme::kCanvasBg);
-    const std::string msg = "No canvas for the '" + family_ + "' family yet: the listing, the state and the timeline work as usual.";
-    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(o.x + 16, o.y + 16), theme::kLabel, msg.c_str(), nullptr, size.x - 32);
-    return {};
-  }
-  void fit() override {}
-  void follow(const Canvas&) override {}
-
- private:
-  std::string family_;
-};
-
 }  // namespace
 
-std::unique_ptr<Canvas> make_canvas(std::string_view family, TextureHost& textures) {
-  if (family == "raster") return std::make_unique<PixelCanvas>(textures);
-  if (family == "ray") return std::make_unique<RayCanvas>();
-  return std::make_unique<PlaceholderCanvas>(family);
+std::unique_ptr<Canvas> make_canvas(View view, TextureHost& textures) {
+  switch (view) {
+    case View::plane2d: return std::make_unique<PixelCanvas>(textures);
+    case View::orbit3d: return std::make_unique<RayCanvas>();
+  }
+  return std::make_unique<PixelCanvas>(textures);
 }
 
 }  // namespace sw::vis

@@ -3,6 +3,7 @@
 #pragma once
 #include <exception>
 #include <ostream>
+#include <span>
 #include <string>
 #include "core/number.hpp"
 #include "core/step.hpp"
@@ -38,9 +39,24 @@ template <class Num> class JsonlProbe {
   }
   JsonlProbe& num(const char* name, const Num& v) { return add_var(name, json_value(v)); }
   JsonlProbe& idx(const char* name, std::int64_t v) { return add_var(name, std::to_string(v)); }
-  JsonlProbe& pixel(Pixel p) {
-    open_geo(GeoKind::pixel);
-    geo_ += std::to_string(p.x) + ',' + std::to_string(p.y) + "]}";
+  JsonlProbe& pixel(Pixel p) { return igeo(GeoKind::pixel, p.x, p.y); }
+  JsonlProbe& span(std::int64_t j, std::int64_t i0, std::int64_t i1) { return igeo(GeoKind::span, j, i0, i1); }
+  template <class... I> JsonlProbe& igeo(GeoKind kind, I... values) {
+    open_geo(kind);
+    bool first = true;
+    ((geo_ += (first ? "" : ","), geo_ += std::to_string(static_cast<std::int64_t>(values)), first = false), ...);
+    geo_ += "]}";
+    return *this;
+  }
+  JsonlProbe& geo_list(GeoKind kind, std::span<const Vec2<Num>> points) {
+    open_geo(kind);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (i) geo_ += ',';
+      geo_ += json_value(points[i].x);
+      geo_ += ',';
+      geo_ += json_value(points[i].y);
+    }
+    geo_ += "]}";
     return *this;
   }
   template <class... V> JsonlProbe& geo(GeoKind kind, const V&... values) {

@@ -4,7 +4,7 @@
 // A value is the pair (v, m): v is the double result and m the same expression evaluated on
 // magnitudes (|x| for an input, m_a + m_b for a sum or a difference, m_a m_b for a product). An
 // expression of index k <= kIndexBudget has |v - exact| <= gamma_k m (index rules and the proof:
-// docs/accuracy-rays.md, "Filtered mode"). A comparison is decided when the difference exceeds
+// docs/rays/accuracy.md, "Filtered mode"). A comparison is decided when the difference exceeds
 // that bound. Otherwise it raises a per-thread flag instead of throwing, so that the hot path has
 // no exception edges (a try block around inlined code cost the plane test 40%): whoever runs an
 // algorithm on Mag clears the flag first and, when it is raised afterwards, discards the result
@@ -52,7 +52,7 @@ template <bool Checked> class BasicMag {
 
  public:
   // The largest index any decision may have. The ray algorithms reach 38 (measured by
-  // MagChecked on the test sets, where every run verifies it; docs/accuracy-rays.md).
+  // MagChecked on the test sets, where every run verifies it; docs/rays/accuracy.md).
   static constexpr int kIndexBudget = 64;
   // |v - exact| <= gamma_K M_exact <= gamma_K (1 + gamma_K) m for K <= kIndexBudget, below kC m.
   static constexpr double kC = kIndexBudget * 0x1p-53 * (1 + 0x1p-40);
@@ -102,7 +102,7 @@ template <bool Checked> class BasicMag {
   // Needs exact(x) >= 0 (the caller decided it). Then |sqrt v - sqrt exact| <= sqrt|v - exact| <
   // sqrt(kC m_x), so one packed square root of (v, 2^106 kC m_x) gives the root and, with the root
   // added, m_s = sqrt v + sqrt(kC m_x) / u; the root's index is 3 whatever x's was (proof:
-  // docs/accuracy-rays.md). No division, unlike m_x / sqrt v. A negative v means the caller found
+  // docs/rays/accuracy.md). No division, unlike m_x / sqrt v. A negative v means the caller found
   // x < 0 (or the flag is up) and discards the root; the max with 0 keeps it from being NaN (and
   // keeps a NaN m, as max returns its second operand then).
   [[gnu::always_inline]] friend BasicMag sqrt(const BasicMag& x) {

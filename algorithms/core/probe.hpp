@@ -5,6 +5,7 @@
 //  - JsonlProbe<Num> (jsonl_probe.hpp): streams JSON lines; memory stays flat.
 #pragma once
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 #include "core/number.hpp"
@@ -30,7 +31,8 @@ struct VarRecord {
 };
 struct GeoRecord {
   GeoKind kind;
-  std::uint32_t slot;   // first of geo_arity(kind) values (integers for pixels)
+  std::uint32_t slot;   // first of `count` values (integers for integer kinds)
+  std::uint32_t count;  // geo_arity(kind), or the list's length for variable kinds
 };
 
 // The number-independent part of a recorded trace, with virtual access to the numbers. The
@@ -53,13 +55,12 @@ class TraceView {
   std::string value_text(const VarRecord& v) const {
     return v.is_int ? std::to_string(ints_[v.slot]) : num_text(v.slot);
   }
-  // Coordinate k of a geometry item, as a double.
+  // Coordinate k of a geometry item, as a double; its lossless text.
   double geo_double(const GeoRecord& g, int k) const {
-    return g.kind == GeoKind::pixel ? static_cast<double>(ints_[g.slot + k]) : num_double(g.slot + k);
+    return geo_desc(g.kind).integer ? static_cast<double>(ints_[g.slot + k]) : num_double(g.slot + k);
   }
-  std::size_t memory_bytes() const {
-    return steps_.capacity() * sizeof(StepRecord) + vars_.capacity() * sizeof(VarRecord) +
-           geos_.capacity() * sizeof(GeoRecord) + ints_.capacity() * sizeof(std::int64_t);
+  std::string geo_text(const GeoRecord& g, int k) const {
+    return geo_desc(g.kind).integer ? std::to_string(ints_[g.slot + k]) : num_text(g.slot + k);
   }
 
  protected:
@@ -95,23 +96,34 @@ template <class Num> class Recorder final : public TraceView {
     steps_.back().var_end++;
     return *this;
   }
-  Recorder& pixel(Pixel p) {
-    geos_.push_back({GeoKind::pixel, static_cast<std::uint32_t>(ints_.size())});
-    ints_.push_back(p.x);
-    ints_.push_back(p.y);
+  Recorder& pixel(Pixel p) { return igeo(GeoKind::pixel, p.x, p.y); }
+  // A run of pixels on row j from column i0 to i1 (both included).
+  Recorder& span(std::int64_t j, std::int64_t i0, std::int64_t i1) { return igeo(GeoKind::span, j, i0, i1); }
+  // Any number-valued geometry: the values in the order SW_GEO_KINDS documents.
+  template <class... V> Recorder& geo(GeoKind kind, const V&... values) {
+    static_assert(sizeof...(V) > 0);
+    geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size()), sizeof...(V)});
+    (nums_.push_back(values), ...);
     steps_.back().geo_end++;
     return *this;
   }
-  // Any number-valued geometry: the values in the order kGeoArity documents.
-  template <class... V> Recorder& geo(GeoKind kind, const V&... values) {
-    static_assert(sizeof...(V) > 0);
-    geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size())});
-    (nums_.push_back(values), ...);
+  // A variable-length kind (polyline, polygon): the points' coordinates in order.
+  Recorder& geo_list(GeoKind kind, std::span<const Vec2<Num>> points) {
+    geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size()), static_cast<std::uint32_t>(2 * points.size())});
+    for (const auto& p : points) nums_.push_back(p.x), nums_.push_back(p.y);
     steps_.back().geo_end++;
     return *this;
   }
   Recorder& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
   Recorder& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
+
+  // An integer-valued geometry item (pixel, span).
+  template <class... I> Recorder& igeo(GeoKind kind, I... values) {
+    geos_.push_back({kind, static_cast<std::uint32_t>(ints_.size()), sizeof...(I)});
+    (ints_.push_back(static_cast<std::int64_t>(values)), ...);
+    steps_.back().geo_end++;
+    return *this;
+  }
 
   // Empties the trace but keeps its memory: re-recording (dragging an endpoint) then costs no
   // allocation or page faults.

@@ -6,7 +6,7 @@
 #include <array>
 #include <string_view>
 #include "core/probe.hpp"
-#include "ray/ray_common.hpp"
+#include "rays/ray_common.hpp"
 
 namespace sw::ray {
 
@@ -18,20 +18,19 @@ template <class Num> struct BoxHit {
 struct RayBox {
   static constexpr std::string_view id = "ray-box";
   static constexpr std::string_view summary = "Ray-box slab test, exact for zero and -0 direction components";
-  enum Line : std::uint32_t { init = 1, axis, flat, outside, slab, order, clip, empty, exit, hit };
-  static constexpr std::array<std::string_view, 10> lines = {
-      "t_near <- -inf; t_far <- +inf",
-      "for each axis k:",
-      "    if d_k = 0:                                -- parallel to the slab (+0 or -0)",
-      "        if o_k < min_k or o_k > max_k: miss; else next axis",
-      "    t1 <- (min_k - o_k) / d_k; t2 <- (max_k - o_k) / d_k",
-      "    if d_k < 0: swap t1, t2                    -- min_k <= max_k, so then t1 >= t2",
-      "    t_near <- max(t_near, t1); t_far <- min(t_far, t2)",
-      "if t_near > t_far: miss                        -- the slab intervals do not overlap",
-      "if t_far <= 0: miss                            -- the box is behind",
-      "hit: t <- t_near if t_near > 0, else t_far     -- origin inside: the exit point",
-  };
-  static constexpr Listing listing() { return {"Slab test", lines}; }
+#define SW_LINES_RAY_BOX(X) \
+  X(init, "t_near <- -inf; t_far <- +inf") \
+  X(axis, "for each axis k:") \
+  X(flat, "    if d_k = 0:                                -- parallel to the slab (+0 or -0)") \
+  X(outside, "        if o_k < min_k or o_k > max_k: miss; else next axis") \
+  X(slab, "    t1 <- (min_k - o_k) / d_k; t2 <- (max_k - o_k) / d_k") \
+  X(order, "    if d_k < 0: swap t1, t2                    -- min_k <= max_k, so then t1 >= t2") \
+  X(clip, "    t_near <- max(t_near, t1); t_far <- min(t_far, t2)") \
+  X(empty, "if t_near > t_far: miss                        -- the slab intervals do not overlap") \
+  X(exit, "if t_far <= 0: miss                            -- the box is behind") \
+  X(hit, "hit: t <- t_near if t_near > 0, else t_far     -- origin inside: the exit point")
+  SW_LISTING("Slab test", SW_LINES_RAY_BOX)
+#undef SW_LINES_RAY_BOX
 };
 
 template <class Num, class Probe = NoProbe>

@@ -1,5 +1,5 @@
 // Shared pieces of the ray family: the ray type, square roots for every number type, and the
-// exact-mode helpers that keep sphere roots free of cancellation. Semantics: docs/semantics/rays.md.
+// exact-mode helpers that keep sphere roots free of cancellation. Semantics: docs/rays/semantics.md.
 #pragma once
 #include <cmath>
 #include <cstdint>

@@ -1,21 +1,21 @@
 // The ray family's catalog entries: ray-plane, ray-sphere-{geometric,quadratic,stable}, ray-box,
-// ray-triangle-{barycentric,mt,watertight}. Semantics: docs/semantics/rays.md.
+// ray-triangle-{barycentric,mt,watertight}. Semantics: docs/rays/semantics.md.
 #include <cmath>
 #include <memory>
 #include <random>
 #include "adapter.hpp"
-#include "rays_cases.hpp"
+#include "rays/cases.hpp"
 #include "rays_oracle.hpp"
-#include "ray/camera_ray.hpp"
-#include "ray/ray_box.hpp"
-#include "ray/sphere_uv.hpp"
-#include "ray/ray_plane.hpp"
-#include "ray/ray_sphere_geometric.hpp"
-#include "ray/ray_sphere_quadratic.hpp"
-#include "ray/ray_sphere_stable.hpp"
-#include "ray/ray_triangle_barycentric.hpp"
-#include "ray/ray_triangle_mt.hpp"
-#include "ray/ray_triangle_watertight.hpp"
+#include "rays/camera_ray.hpp"
+#include "rays/ray_box.hpp"
+#include "rays/sphere_uv.hpp"
+#include "rays/ray_plane.hpp"
+#include "rays/ray_sphere_geometric.hpp"
+#include "rays/ray_sphere_quadratic.hpp"
+#include "rays/ray_sphere_stable.hpp"
+#include "rays/ray_triangle_barycentric.hpp"
+#include "rays/ray_triangle_mt.hpp"
+#include "rays/ray_triangle_watertight.hpp"
 
 namespace sw {
 namespace {
@@ -67,7 +67,7 @@ RayInput parse_input(const Json& j, Prim prim) {
     case Prim::triangle: {
       if (!g.is_array() || g.size() != 3) throw InputError("input.triangle: expected [[x,y,z],[x,y,z],[x,y,z]]");
       for (int i = 0; i < 3; ++i) in.v[i] = point3(g[i], "input.triangle[" + std::to_string(i) + "]");
-      // A degenerate (zero-area) triangle is valid input and a defined miss (docs/semantics/rays.md).
+      // A degenerate (zero-area) triangle is valid input and a defined miss (docs/rays/semantics.md).
       if (j.contains("attr")) {
         // Per-vertex attributes (uv, normals, colours...): three arrays of one length, 1..16.
         const Json& a = j["attr"];
@@ -209,9 +209,10 @@ template <class AlgoT, Prim P> struct RaySpec {
   using Algo = AlgoT;
   using Input = RayInput;
   using Output = RayOutput;
-  // The magnitude filter, then intervals for what it leaves uncertain (docs/accuracy-rays.md).
+  // The magnitude filter, then intervals for what it leaves uncertain (docs/rays/accuracy.md).
   using Filters = std::tuple<Mag, Interval>;
-  static constexpr std::string_view family = "ray";
+  static constexpr std::string_view family = "rays";
+  static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static Input parse(const Json& j, Numeric) { return parse_input(j, P); }
   template <class Num> static Prepared<Num> prepare(const Input& in) {
@@ -391,7 +392,8 @@ struct CameraSpec {
   using Algo = ray::CameraRayAlgo;
   using Input = CameraInput;
   using Output = ValuesOutput;
-  static constexpr std::string_view family = "ray";
+  static constexpr std::string_view family = "rays";
+  static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64};
   static inline const std::string example =
       R"({"camera":{"eye":[0,1,5],"vpn":[0,0,1],"vup":[0,1,0],"d":1,"fov":60},"pixel":[3,2],"size":[8,6],"projection":"perspective"})";
@@ -433,7 +435,8 @@ struct SphereUVSpec {
   using Algo = ray::SphereUVAlgo;
   using Input = SphereUVInput;
   using Output = ValuesOutput;
-  static constexpr std::string_view family = "ray";
+  static constexpr std::string_view family = "rays";
+  static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64};
   static inline const std::string example = R"({"sphere":{"c":[0,0,0],"r":1},"point":[-0.6,0,0.8]})";
   static Input parse(const Json& j, Numeric) {

@@ -2,13 +2,13 @@
 // VPN and the up vector VUP, the pixel (i, j) mapped to a point P1 on a window of the view plane
 // at distance d in front of the eye P0, and the ray P0 -> P1. Perspective takes the window from
 // a vertical field of view; fisheye (equidistant) and cylindrical map the pixel to angles instead.
-// Pixel convention (docs/semantics/rays.md): pixel (i, j) is the unit square centred on (i, j), as
+// Pixel convention (docs/rays/semantics.md): pixel (i, j) is the unit square centred on (i, j), as
 // in the raster family; the image spans [-1/2, W - 1/2] x [-1/2, H - 1/2], row 0 at the top.
 #pragma once
 #include <array>
 #include <string_view>
 #include "core/probe.hpp"
-#include "ray/ray_common.hpp"
+#include "rays/ray_common.hpp"
 
 namespace sw::ray {
 
@@ -30,18 +30,17 @@ template <class Num> struct CameraRay {
 struct CameraRayAlgo {
   static constexpr std::string_view id = "camera-ray";
   static constexpr std::string_view summary = "Camera ray: view-plane model (perspective), fisheye, cylindrical";
-  enum Line : std::uint32_t { frame = 1, screen, window, point, fisheye, circle, cyl, ray };
-  static constexpr std::array<std::string_view, 8> lines = {
-      "n <- VPN/|VPN|; u <- (VUP x n)/|VUP x n|; v <- n x u",
-      "sx <- 2 (i + 1/2)/W - 1; sy <- 1 - 2 (j + 1/2)/H     -- the pixel centre in [-1, 1]",
-      "perspective: hh <- d tan(fov/2); hw <- hh W/H       -- the window's half sizes",
-      "P1 <- P0 - d n + sx hw u + sy hh v; dir <- P1 - P0",
-      "fisheye: x <- sx W/H; rho <- sqrt(x^2 + sy^2); theta <- rho fov/2; phi <- atan2(sy, x)",
-      "if rho > 1: no ray (outside the image circle); dir <- sin(theta)(cos(phi) u + sin(phi) v) - cos(theta) n",
-      "cylindrical: phi <- sx (fov/2) W/H; dir <- d (sin(phi) u - cos(phi) n) + sy d tan(fov/2) v",
-      "ray <- (P0, dir)",
-  };
-  static constexpr Listing listing() { return {"Camera rays", lines}; }
+#define SW_LINES_CAMERA_RAY_ALGO(X) \
+  X(frame, "n <- VPN/|VPN|; u <- (VUP x n)/|VUP x n|; v <- n x u") \
+  X(screen, "sx <- 2 (i + 1/2)/W - 1; sy <- 1 - 2 (j + 1/2)/H     -- the pixel centre in [-1, 1]") \
+  X(window, "perspective: hh <- d tan(fov/2); hw <- hh W/H       -- the window's half sizes") \
+  X(point, "P1 <- P0 - d n + sx hw u + sy hh v; dir <- P1 - P0") \
+  X(fisheye, "fisheye: x <- sx W/H; rho <- sqrt(x^2 + sy^2); theta <- rho fov/2; phi <- atan2(sy, x)") \
+  X(circle, "if rho > 1: no ray (outside the image circle); dir <- sin(theta)(cos(phi) u + sin(phi) v) - cos(theta) n") \
+  X(cyl, "cylindrical: phi <- sx (fov/2) W/H; dir <- d (sin(phi) u - cos(phi) n) + sy d tan(fov/2) v") \
+  X(ray, "ray <- (P0, dir)")
+  SW_LISTING("Camera rays", SW_LINES_CAMERA_RAY_ALGO)
+#undef SW_LINES_CAMERA_RAY_ALGO
 };
 
 template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {

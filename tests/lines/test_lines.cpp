@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include "line_cases.hpp"
 #include "lines_oracle.hpp"
-#include "raster/bresenham_line.hpp"
-#include "raster/dda_grid_walk.hpp"
-#include "raster/dda_line.hpp"
+#include "lines/bresenham_line.hpp"
+#include "lines/dda_grid_walk.hpp"
+#include "lines/dda_line.hpp"
 
 using namespace sw;
 using sw::testing::Segment;
@@ -21,9 +21,9 @@ template <class Num, class Probe> std::vector<Pixel> run(Alg alg, const Segment&
   std::vector<Pixel> px;
   bool ok = false;
   switch (alg) {
-    case Alg::dda: ok = raster::dda_line<Num>(as<Num>(s.p0), as<Num>(s.p1), px, probe); break;
-    case Alg::walk: ok = raster::dda_grid_walk<Num>(as<Num>(s.p0), as<Num>(s.p1), px, probe); break;
-    case Alg::bresenham: ok = raster::bresenham_line<Num>(as<Num>(s.p0), as<Num>(s.p1), px, probe); break;
+    case Alg::dda: ok = lines::dda_line<Num>(as<Num>(s.p0), as<Num>(s.p1), px, probe); break;
+    case Alg::walk: ok = lines::dda_grid_walk<Num>(as<Num>(s.p0), as<Num>(s.p1), px, probe); break;
+    case Alg::bresenham: ok = lines::bresenham_line<Num>(as<Num>(s.p0), as<Num>(s.p1), px, probe); break;
   }
   if (finished) *finished = ok;
   return px;
@@ -176,7 +176,7 @@ TEST_CASE("dda-line: every exact step matches its definition", "[lines][steps]")
     for (std::size_t i = 0; i < rec.size(); ++i) {
       StepReader r{rec, i};
       const auto line = r.s().line;
-      using L = raster::DdaLine;
+      using L = lines::DdaLine;
       if (line == L::delta) EXPECT((r.q("dx") == d.x && r.q("dy") == d.y));
       if (line == L::major) EXPECT(r.k("a") == a);
       if (line == L::swap) EXPECT((r.k("swapped") == swap && r.q("dx") == dd.x && r.q("dy") == dd.y));
@@ -220,7 +220,7 @@ TEST_CASE("dda-grid-walk: every exact step matches its definition", "[lines][ste
     Replay replay;
     for (std::size_t i = 0; i < rec.size(); ++i) {
       StepReader r{rec, i};
-      using L = raster::DdaGridWalk;
+      using L = lines::DdaGridWalk;
       const auto line = r.s().line;
       if (line == L::delta) EXPECT((r.q("dx") == d.x && r.q("dy") == d.y));
       if (r.s().kind == StepKind::visit) {
@@ -264,7 +264,7 @@ TEST_CASE("bresenham-line: every exact step matches its definition", "[lines][st
     Replay replay;
     for (std::size_t i = 0; i < rec.size(); ++i) {
       StepReader r{rec, i};
-      if (r.s().line != raster::BresenhamLine::plot) continue;
+      if (r.s().line != lines::BresenhamLine::plot) continue;
       if (plots >= want.size()) { replay.expect(false, i, "more plots than the oracle"); break; }
       EXPECT(r.pixel() == want[plots]);
       // e = 2A (offset of the next sample from the current minor row) + 2B - A: minor offset of

@@ -9,17 +9,17 @@
 #include <sstream>
 #include <sys/wait.h>
 #include "catalog.hpp"
-#include "rays_cases.hpp"
+#include "rays/cases.hpp"
 #include "rays_oracle.hpp"
 #include "trace_io.hpp"
-#include "ray/ray_box.hpp"
-#include "ray/ray_plane.hpp"
-#include "ray/ray_sphere_geometric.hpp"
-#include "ray/ray_sphere_quadratic.hpp"
-#include "ray/ray_sphere_stable.hpp"
-#include "ray/ray_triangle_barycentric.hpp"
-#include "ray/ray_triangle_mt.hpp"
-#include "ray/ray_triangle_watertight.hpp"
+#include "rays/ray_box.hpp"
+#include "rays/ray_plane.hpp"
+#include "rays/ray_sphere_geometric.hpp"
+#include "rays/ray_sphere_quadratic.hpp"
+#include "rays/ray_sphere_stable.hpp"
+#include "rays/ray_triangle_barycentric.hpp"
+#include "rays/ray_triangle_mt.hpp"
+#include "rays/ray_triangle_watertight.hpp"
 
 using namespace sw;
 using V3 = Vec3<Rational>;

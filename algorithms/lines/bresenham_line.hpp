@@ -1,6 +1,6 @@
 // Bresenham: the integer-only DDA for integer endpoints. Walks from p0 toward p1 (p1 excluded),
 // one pixel per major-axis unit, choosing the minor step with a decision variable e.
-// Semantics: docs/semantics/lines.md.
+// Semantics: docs/lines/semantics.md.
 #pragma once
 #include <array>
 #include <string_view>
@@ -9,25 +9,24 @@
 #include "core/probe.hpp"
 #include "core/vec.hpp"
 
-namespace sw::raster {
+namespace sw::lines {
 
 struct BresenhamLine {
   static constexpr std::string_view id = "bresenham-line";
   static constexpr std::string_view summary = "Bresenham: integer endpoints, integer decision variable, p1 excluded";
-  enum Line : std::uint32_t { delta = 1, major, signs, decision, loop, plot, test, minor_step, major_step, done };
-  static constexpr std::array<std::string_view, 10> lines = {
-      "d <- p1 - p0                              -- integer endpoints",
-      "a <- x if |dx| > |dy|, else y; b <- the other axis   -- ties step rows",
-      "s_a <- sign(d_a); s_b <- sign(d_b); A <- |d_a|; B <- |d_b|",
-      "e <- 2B - A                               -- 2A x (minor offset of the next sample - 1/2)",
-      "p <- p0; repeat A times:",
-      "    plot p",
-      "    if e > 0, or e = 0 and s_b > 0:        -- a tie rounds up: floor(v + 1/2)",
-      "        p_b <- p_b + s_b; e <- e - 2A",
-      "    p_a <- p_a + s_a; e <- e + 2B",
-      "done",
-  };
-  static constexpr Listing listing() { return {"Bresenham line", lines}; }
+#define SW_LINES_BRESENHAM_LINE(X) \
+  X(delta, "d <- p1 - p0                              -- integer endpoints") \
+  X(major, "a <- x if |dx| > |dy|, else y; b <- the other axis   -- ties step rows") \
+  X(signs, "s_a <- sign(d_a); s_b <- sign(d_b); A <- |d_a|; B <- |d_b|") \
+  X(decision, "e <- 2B - A                               -- 2A x (minor offset of the next sample - 1/2)") \
+  X(loop, "p <- p0; repeat A times:") \
+  X(plot, "    plot p") \
+  X(test, "    if e > 0, or e = 0 and s_b > 0:        -- a tie rounds up: floor(v + 1/2)") \
+  X(minor_step, "        p_b <- p_b + s_b; e <- e - 2A") \
+  X(major_step, "    p_a <- p_a + s_a; e <- e + 2B") \
+  X(done, "done")
+  SW_LISTING("Bresenham line", SW_LINES_BRESENHAM_LINE)
+#undef SW_LINES_BRESENHAM_LINE
 };
 
 // Precondition: p0 and p1 have integer coordinates (the caller validates this).
@@ -68,4 +67,4 @@ bool bresenham_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& 
   return true;
 }
 
-}  // namespace sw::raster
+}  // namespace sw::lines

@@ -4,27 +4,26 @@
 // q = -(b' + sign(b') sqrt(D)), t = c/q and q/a, which never subtracts nearly equal numbers.
 // Which of the two is nearer follows from the sign of b' alone.
 #pragma once
-#include "ray/ray_sphere_geometric.hpp"
+#include "rays/ray_sphere_geometric.hpp"
 
 namespace sw::ray {
 
 struct RaySphereStable {
   static constexpr std::string_view id = "ray-sphere-stable";
   static constexpr std::string_view summary = "Ray-sphere, stable: Hearn-Baker discriminant and the Press et al. root";
-  enum Line : std::uint32_t { coeffs = 1, foot, disc, miss, q, degenerate, order, near, far, none };
-  static constexpr std::array<std::string_view, 10> lines = {
-      "f <- o - c; a <- d . d; b' <- f . d; cc <- f . f - r^2",
-      "l <- f - (b' / a) d                          -- from the centre to the line's closest point",
-      "D <- a (r^2 - l . l)                         -- Hearn-Baker: b'^2 - a cc without the cancellation",
-      "if D < 0: miss",
-      "q <- -(b' + sign(b') sqrt(D))                -- sign(0) = +1; both terms have one sign",
-      "if q = 0: miss                               -- tangent at the origin: both roots are 0",
-      "if b' >= 0: near <- q / a, far <- cc / q; else near <- cc / q, far <- q / a",
-      "if b' < 0 and cc > 0: hit at near            -- b' < 0 makes q > 0 (a > 0): near > 0 iff cc > 0",
-      "if b' < 0 or cc < 0: hit at far              -- b' >= 0 makes q < 0: far = cc / q > 0 iff cc < 0",
-      "miss",
-  };
-  static constexpr Listing listing() { return {"Stable ray-sphere", lines}; }
+#define SW_LINES_RAY_SPHERE_STABLE(X) \
+  X(coeffs, "f <- o - c; a <- d . d; b' <- f . d; cc <- f . f - r^2") \
+  X(foot, "l <- f - (b' / a) d                          -- from the centre to the line's closest point") \
+  X(disc, "D <- a (r^2 - l . l)                         -- Hearn-Baker: b'^2 - a cc without the cancellation") \
+  X(miss, "if D < 0: miss") \
+  X(q, "q <- -(b' + sign(b') sqrt(D))                -- sign(0) = +1; both terms have one sign") \
+  X(degenerate, "if q = 0: miss                               -- tangent at the origin: both roots are 0") \
+  X(order, "if b' >= 0: near <- q / a, far <- cc / q; else near <- cc / q, far <- q / a") \
+  X(near, "if b' < 0 and cc > 0: hit at near            -- b' < 0 makes q > 0 (a > 0): near > 0 iff cc > 0") \
+  X(far, "if b' < 0 or cc < 0: hit at far              -- b' >= 0 makes q < 0: far = cc / q > 0 iff cc < 0") \
+  X(none, "miss")
+  SW_LISTING("Stable ray-sphere", SW_LINES_RAY_SPHERE_STABLE)
+#undef SW_LINES_RAY_SPHERE_STABLE
 };
 
 template <class Num, class Probe = NoProbe>

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <type_traits>
 #include "core/probe.hpp"
-#include "ray/ray_common.hpp"
+#include "rays/ray_common.hpp"
 
 namespace sw::ray {
 
@@ -20,21 +20,20 @@ template <class Num> struct TriangleHit {
 struct RayTriangleWatertight {
   static constexpr std::string_view id = "ray-triangle-watertight";
   static constexpr std::string_view summary = "Ray-triangle, watertight (Woop-Benthin-Wald 2013): shear to +z, 2D edge functions";
-  enum Line : std::uint32_t { axes = 1, shear, translate, project, edges, retry, sides, det, depth, sign, hit };
-  static constexpr std::array<std::string_view, 11> lines = {
-      "kz <- axis of max |d|; kx, ky the next two; swap kx, ky if d_kz < 0   -- keeps the winding",
-      "Sx <- d_kx / d_kz; Sy <- d_ky / d_kz; Sz <- 1 / d_kz",
-      "A, B, C <- v0 - o, v1 - o, v2 - o",
-      "P' <- (P_kx - Sx P_kz, P_ky - Sy P_kz) for P in A, B, C   -- the ray is now the +z axis",
-      "U <- Cx By - Cy Bx; V <- Ax Cy - Ay Cx; W <- Bx Ay - By Ax",
-      "if U, V or W = 0 in float: redo the edge functions in double",
-      "if some of U, V, W < 0 and some > 0: miss              -- the axis passes outside an edge",
-      "det <- U + V + W; if det = 0: miss                      -- the ray is parallel to the plane",
-      "T <- U Sz A_kz + V Sz B_kz + W Sz C_kz",
-      "if T = 0 or sign(T) != sign(det): miss                 -- t = T/det must be > 0",
-      "hit: r <- 1 / det; t <- T r; b <- (U r, V r, W r)",
-  };
-  static constexpr Listing listing() { return {"Watertight ray-triangle", lines}; }
+#define SW_LINES_RAY_TRIANGLE_WATERTIGHT(X) \
+  X(axes, "kz <- axis of max |d|; kx, ky the next two; swap kx, ky if d_kz < 0   -- keeps the winding") \
+  X(shear, "Sx <- d_kx / d_kz; Sy <- d_ky / d_kz; Sz <- 1 / d_kz") \
+  X(translate, "A, B, C <- v0 - o, v1 - o, v2 - o") \
+  X(project, "P' <- (P_kx - Sx P_kz, P_ky - Sy P_kz) for P in A, B, C   -- the ray is now the +z axis") \
+  X(edges, "U <- Cx By - Cy Bx; V <- Ax Cy - Ay Cx; W <- Bx Ay - By Ax") \
+  X(retry, "if U, V or W = 0 in float: redo the edge functions in double") \
+  X(sides, "if some of U, V, W < 0 and some > 0: miss              -- the axis passes outside an edge") \
+  X(det, "det <- U + V + W; if det = 0: miss                      -- the ray is parallel to the plane") \
+  X(depth, "T <- U Sz A_kz + V Sz B_kz + W Sz C_kz") \
+  X(sign, "if T = 0 or sign(T) != sign(det): miss                 -- t = T/det must be > 0") \
+  X(hit, "hit: r <- 1 / det; t <- T r; b <- (U r, V r, W r)")
+  SW_LISTING("Watertight ray-triangle", SW_LINES_RAY_TRIANGLE_WATERTIGHT)
+#undef SW_LINES_RAY_TRIANGLE_WATERTIGHT
 };
 
 template <class Num, class Probe = NoProbe>

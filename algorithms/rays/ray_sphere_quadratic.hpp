@@ -1,24 +1,23 @@
 // The textbook quadratic: |o + t d - c|^2 = r^2 as a t^2 + b t + c = 0, both roots by the
 // quadratic formula, the smaller positive one wins. Far small spheres lose everything to b^2 ~ 4ac.
 #pragma once
-#include "ray/ray_sphere_geometric.hpp"
+#include "rays/ray_sphere_geometric.hpp"
 
 namespace sw::ray {
 
 struct RaySphereQuadratic {
   static constexpr std::string_view id = "ray-sphere-quadratic";
   static constexpr std::string_view summary = "Ray-sphere, textbook quadratic formula";
-  enum Line : std::uint32_t { coeffs = 1, disc, miss, roots, near, far, none };
-  static constexpr std::array<std::string_view, 7> lines = {
-      "f <- o - c; a <- d . d; b <- 2 f . d; cc <- f . f - r^2",
-      "D <- b^2 - 4 a cc",
-      "if D < 0: miss",
-      "n0 <- -b - sqrt(D); n1 <- -b + sqrt(D)       -- the roots are t0 = n0 / 2a <= t1 = n1 / 2a",
-      "if n0 > 0: hit at t0                         -- 2a > 0, so t0 has n0's sign",
-      "if n1 > 0: hit at t1",
-      "miss                                         -- the sphere is behind",
-  };
-  static constexpr Listing listing() { return {"Quadratic ray-sphere", lines}; }
+#define SW_LINES_RAY_SPHERE_QUADRATIC(X) \
+  X(coeffs, "f <- o - c; a <- d . d; b <- 2 f . d; cc <- f . f - r^2") \
+  X(disc, "D <- b^2 - 4 a cc") \
+  X(miss, "if D < 0: miss") \
+  X(roots, "n0 <- -b - sqrt(D); n1 <- -b + sqrt(D)       -- the roots are t0 = n0 / 2a <= t1 = n1 / 2a") \
+  X(near, "if n0 > 0: hit at t0                         -- 2a > 0, so t0 has n0's sign") \
+  X(far, "if n1 > 0: hit at t1") \
+  X(none, "miss                                         -- the sphere is behind")
+  SW_LISTING("Quadratic ray-sphere", SW_LINES_RAY_SPHERE_QUADRATIC)
+#undef SW_LINES_RAY_SPHERE_QUADRATIC
 };
 
 template <class Num, class Probe = NoProbe>

@@ -7,7 +7,7 @@
 #include <array>
 #include <string_view>
 #include "core/probe.hpp"
-#include "ray/ray_common.hpp"
+#include "rays/ray_common.hpp"
 
 namespace sw::ray {
 
@@ -19,14 +19,13 @@ template <class Num> struct SphereUV {
 struct SphereUVAlgo {
   static constexpr std::string_view id = "sphere-uv";
   static constexpr std::string_view summary = "Inverse mapping of a sphere: normal, latitude/longitude (atan2), (u, v)";
-  enum Line : std::uint32_t { normal = 1, lon, lat, uv };
-  static constexpr std::array<std::string_view, 4> lines = {
-      "N <- (P - c) / |P - c|                        -- the outward unit normal",
-      "lon <- atan2(N_y, N_x)                          -- in (-pi, pi]; the seam is y = 0, x < 0",
-      "lat <- atan2(N_z, sqrt(N_x^2 + N_y^2))          -- in [-pi/2, pi/2]; well conditioned at the poles",
-      "u <- (lon + pi) / 2pi; v <- (lat + pi/2) / pi",
-  };
-  static constexpr Listing listing() { return {"Sphere inverse mapping", lines}; }
+#define SW_LINES_SPHERE_U_V_ALGO(X) \
+  X(normal, "N <- (P - c) / |P - c|                        -- the outward unit normal") \
+  X(lon, "lon <- atan2(N_y, N_x)                          -- in (-pi, pi]; the seam is y = 0, x < 0") \
+  X(lat, "lat <- atan2(N_z, sqrt(N_x^2 + N_y^2))          -- in [-pi/2, pi/2]; well conditioned at the poles") \
+  X(uv, "u <- (lon + pi) / 2pi; v <- (lat + pi/2) / pi")
+  SW_LISTING("Sphere inverse mapping", SW_LINES_SPHERE_U_V_ALGO)
+#undef SW_LINES_SPHERE_U_V_ALGO
 };
 
 // Precondition: p != c (validated).

@@ -2,26 +2,25 @@
 // barycentric coordinates from the precomputed edge vectors e1, e2 in the 2D projection that
 // drops the normal's largest axis (that projection keeps the triangle non-degenerate).
 #pragma once
-#include "ray/ray_triangle_watertight.hpp"
+#include "rays/ray_triangle_watertight.hpp"
 
 namespace sw::ray {
 
 struct RayTriangleBarycentric {
   static constexpr std::string_view id = "ray-triangle-barycentric";
   static constexpr std::string_view summary = "Ray-triangle, implementor's guide: plane hit, then barycentrics from e1, e2";
-  enum Line : std::uint32_t { edges = 1, normal, denom, t, point, drop, solve, inside, hit };
-  static constexpr std::array<std::string_view, 9> lines = {
-      "e1 <- v1 - v0; e2 <- v2 - v0                  -- precomputed per triangle",
-      "n <- e1 x e2",
-      "den <- n . d; if den = 0: miss                 -- parallel to the plane (or in it)",
-      "t <- n . (v0 - o) / den; if t <= 0: miss",
-      "P <- o + t d",
-      "k <- axis of max |n|; (i, j) the other two     -- project along k",
-      "w <- P - v0; beta <- (w_i e2_j - w_j e2_i) / n_k'; gamma <- (e1_i w_j - e1_j w_i) / n_k'",
-      "if beta < 0 or gamma < 0 or beta + gamma > 1: miss",
-      "hit: b <- (1 - beta - gamma, beta, gamma)",
-  };
-  static constexpr Listing listing() { return {"Implementor's-guide ray-triangle", lines}; }
+#define SW_LINES_RAY_TRIANGLE_BARYCENTRIC(X) \
+  X(edges, "e1 <- v1 - v0; e2 <- v2 - v0                  -- precomputed per triangle") \
+  X(normal, "n <- e1 x e2") \
+  X(denom, "den <- n . d; if den = 0: miss                 -- parallel to the plane (or in it)") \
+  X(t, "t <- n . (v0 - o) / den; if t <= 0: miss") \
+  X(point, "P <- o + t d") \
+  X(drop, "k <- axis of max |n|; (i, j) the other two     -- project along k") \
+  X(solve, "w <- P - v0; beta <- (w_i e2_j - w_j e2_i) / n_k'; gamma <- (e1_i w_j - e1_j w_i) / n_k'") \
+  X(inside, "if beta < 0 or gamma < 0 or beta + gamma > 1: miss") \
+  X(hit, "hit: b <- (1 - beta - gamma, beta, gamma)")
+  SW_LISTING("Implementor's-guide ray-triangle", SW_LINES_RAY_TRIANGLE_BARYCENTRIC)
+#undef SW_LINES_RAY_TRIANGLE_BARYCENTRIC
 };
 
 template <class Num, class Probe = NoProbe>

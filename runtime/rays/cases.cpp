@@ -1,4 +1,4 @@
-#include "rays_cases.hpp"
+#include "rays/cases.hpp"
 #include <cmath>
 #include <random>
 

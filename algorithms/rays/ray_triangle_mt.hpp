@@ -2,27 +2,26 @@
 // triple products, testing u and v as soon as each is known. No epsilon: det = 0 (ray parallel to
 // the plane, or in it) is the only rejection of that kind, so the semantics stay defined.
 #pragma once
-#include "ray/ray_triangle_watertight.hpp"
+#include "rays/ray_triangle_watertight.hpp"
 
 namespace sw::ray {
 
 struct RayTriangleMT {
   static constexpr std::string_view id = "ray-triangle-mt";
   static constexpr std::string_view summary = "Ray-triangle, Moller-Trumbore: Cramer's rule with triple products";
-  enum Line : std::uint32_t { edges = 1, pvec, det, inv, tvec, u, qvec, v, t, hit };
-  static constexpr std::array<std::string_view, 10> lines = {
-      "e1 <- v1 - v0; e2 <- v2 - v0",
-      "p <- d x e2",
-      "det <- e1 . p; if det = 0: miss                 -- parallel to the plane (or in it)",
-      "inv <- 1 / det",
-      "s <- o - v0",
-      "u <- (s . p) inv; if u < 0 or u > 1: miss",
-      "q <- s x e1",
-      "v <- (d . q) inv; if v < 0 or u + v > 1: miss",
-      "t <- (e2 . q) inv; if t <= 0: miss",
-      "hit: b <- (1 - u - v, u, v)",
-  };
-  static constexpr Listing listing() { return {"Moller-Trumbore", lines}; }
+#define SW_LINES_RAY_TRIANGLE_M_T(X) \
+  X(edges, "e1 <- v1 - v0; e2 <- v2 - v0") \
+  X(pvec, "p <- d x e2") \
+  X(det, "det <- e1 . p; if det = 0: miss                 -- parallel to the plane (or in it)") \
+  X(inv, "inv <- 1 / det") \
+  X(tvec, "s <- o - v0") \
+  X(u, "u <- (s . p) inv; if u < 0 or u > 1: miss") \
+  X(qvec, "q <- s x e1") \
+  X(v, "v <- (d . q) inv; if v < 0 or u + v > 1: miss") \
+  X(t, "t <- (e2 . q) inv; if t <= 0: miss") \
+  X(hit, "hit: b <- (1 - u - v, u, v)")
+  SW_LISTING("Moller-Trumbore", SW_LINES_RAY_TRIANGLE_M_T)
+#undef SW_LINES_RAY_TRIANGLE_M_T
 };
 
 template <class Num, class Probe = NoProbe>

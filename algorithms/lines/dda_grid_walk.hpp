@@ -1,5 +1,5 @@
 // Grid walk (Amanatides-Woo in 2D): every pixel whose half-open square meets the half-open
-// segment [p0, p1), in the order the segment enters them. Semantics: docs/semantics/lines.md.
+// segment [p0, p1), in the order the segment enters them. Semantics: docs/lines/semantics.md.
 #pragma once
 #include <array>
 #include <string_view>
@@ -8,26 +8,25 @@
 #include "core/probe.hpp"
 #include "core/vec.hpp"
 
-namespace sw::raster {
+namespace sw::lines {
 
 struct DdaGridWalk {
   static constexpr std::string_view id = "dda-grid-walk";
   static constexpr std::string_view summary = "Grid walk: every pixel the half-open segment passes through, in order";
-  enum Line : std::uint32_t { delta = 1, start, setup, first_exit, pick, test, up, visit_up, down, visit_down, done };
-  static constexpr std::array<std::string_view, 11> lines = {
-      "d <- p1 - p0; if d = 0: stop              -- empty segment",
-      "cell <- (round(p0_x), round(p0_y)); visit cell",
-      "for each axis a: step_a <- sign(d_a); tDelta_a <- 1/|d_a|",
-      "    tMax_a <- (cell_a + step_a/2 - p0_a) / d_a   -- t where we leave the cell along a",
-      "loop: t <- min_a tMax_a",
-      "    if t >= 1: stop                        -- p1 itself is excluded",
-      "    for axes with tMax_a = t, step_a > 0: cell_a += 1; tMax_a += tDelta_a",
-      "    if any moved: visit cell               -- an upward boundary belongs to the new cell",
-      "    for axes with tMax_a = t, step_a < 0: cell_a -= 1; tMax_a += tDelta_a",
-      "    if any moved: visit cell               -- a downward boundary belongs to the old one",
-      "done",
-  };
-  static constexpr Listing listing() { return {"Grid walk", lines}; }
+#define SW_LINES_DDA_GRID_WALK(X) \
+  X(delta, "d <- p1 - p0; if d = 0: stop              -- empty segment") \
+  X(start, "cell <- (round(p0_x), round(p0_y)); visit cell") \
+  X(setup, "for each axis a: step_a <- sign(d_a); tDelta_a <- 1/|d_a|") \
+  X(first_exit, "    tMax_a <- (cell_a + step_a/2 - p0_a) / d_a   -- t where we leave the cell along a") \
+  X(pick, "loop: t <- min_a tMax_a") \
+  X(test, "    if t >= 1: stop                        -- p1 itself is excluded") \
+  X(up, "    for axes with tMax_a = t, step_a > 0: cell_a += 1; tMax_a += tDelta_a") \
+  X(visit_up, "    if any moved: visit cell               -- an upward boundary belongs to the new cell") \
+  X(down, "    for axes with tMax_a = t, step_a < 0: cell_a -= 1; tMax_a += tDelta_a") \
+  X(visit_down, "    if any moved: visit cell               -- a downward boundary belongs to the old one") \
+  X(done, "done")
+  SW_LISTING("Grid walk", SW_LINES_DDA_GRID_WALK)
+#undef SW_LINES_DDA_GRID_WALK
 };
 
 // Appends the cells to `out` in walk order. Returns false if the loop bound stopped the walk
@@ -85,4 +84,4 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
   return false;
 }
 
-}  // namespace sw::raster
+}  // namespace sw::lines

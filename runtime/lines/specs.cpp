@@ -2,9 +2,9 @@
 #include <random>
 #include "adapter.hpp"
 #include "lines_oracle.hpp"
-#include "raster/bresenham_line.hpp"
-#include "raster/dda_grid_walk.hpp"
-#include "raster/dda_line.hpp"
+#include "lines/bresenham_line.hpp"
+#include "lines/dda_grid_walk.hpp"
+#include "lines/dda_line.hpp"
 
 namespace sw {
 namespace {
@@ -63,7 +63,8 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
   using Algo = AlgoT;
   using Input = SegmentInput;
   using Output = PixelsOutput;
-  static constexpr std::string_view family = "raster";
+  static constexpr std::string_view family = "lines";
+  static constexpr std::array views{View::plane2d};
   static Input parse(const Json& j, Numeric n) { return parse_segment(j, n, IntegerEndpoints); }
   template <class Num> static std::array<Vec2<Num>, 2> prepare(const Input& in) { return {to_num<Num>(in.p0), to_num<Num>(in.p1)}; }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
@@ -89,12 +90,12 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
   }
 };
 
-struct DdaLineSpec : SegmentSpec<raster::DdaLine, false> {
+struct DdaLineSpec : SegmentSpec<lines::DdaLine, false> {
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})";
   template <class Num, class Probe> static Output compute(const std::array<Vec2<Num>, 2>& p, Probe& probe) {
     Output o;
-    o.finished = raster::dda_line<Num>(p[0], p[1], o.pixels, probe);
+    o.finished = lines::dda_line<Num>(p[0], p[1], o.pixels, probe);
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("pixels", o); }
@@ -102,12 +103,12 @@ struct DdaLineSpec : SegmentSpec<raster::DdaLine, false> {
   static Output oracle(const Input& in) { return {oracle::column_pixels(in.p0, in.p1, oracle::Sampling::ascending)}; }
 };
 
-struct GridWalkSpec : SegmentSpec<raster::DdaGridWalk, false> {
+struct GridWalkSpec : SegmentSpec<lines::DdaGridWalk, false> {
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"p0":[1.25,2.5],"p1":[9.5,6.5]})";
   template <class Num, class Probe> static Output compute(const std::array<Vec2<Num>, 2>& p, Probe& probe) {
     Output o;
-    o.finished = raster::dda_grid_walk<Num>(p[0], p[1], o.pixels, probe);
+    o.finished = lines::dda_grid_walk<Num>(p[0], p[1], o.pixels, probe);
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("cells", o); }
@@ -115,12 +116,12 @@ struct GridWalkSpec : SegmentSpec<raster::DdaGridWalk, false> {
   static Output oracle(const Input& in) { return {oracle::walk_cells(in.p0, in.p1)}; }
 };
 
-struct BresenhamSpec : SegmentSpec<raster::BresenhamLine, true> {
+struct BresenhamSpec : SegmentSpec<lines::BresenhamLine, true> {
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::exact};
   static inline const std::string example = R"({"p0":[1,2],"p1":[13,7]})";
   template <class Num, class Probe> static Output compute(const std::array<Vec2<Num>, 2>& p, Probe& probe) {
     Output o;
-    o.finished = raster::bresenham_line<Num>(p[0], p[1], o.pixels, probe);
+    o.finished = lines::bresenham_line<Num>(p[0], p[1], o.pixels, probe);
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("pixels", o); }

@@ -1,5 +1,5 @@
 // The implementor's-guide DDA line. Samples the segment at each integer position of the major
-// axis and plots the pixel whose square holds the sample. Semantics: docs/semantics/lines.md.
+// axis and plots the pixel whose square holds the sample. Semantics: docs/lines/semantics.md.
 #pragma once
 #include <array>
 #include <string_view>
@@ -8,25 +8,24 @@
 #include "core/probe.hpp"
 #include "core/vec.hpp"
 
-namespace sw::raster {
+namespace sw::lines {
 
 struct DdaLine {
   static constexpr std::string_view id = "dda-line";
   static constexpr std::string_view summary = "DDA line: sample the major axis at integers, round the minor axis";
-  enum Line : std::uint32_t { delta = 1, major, swap, empty, slope, offset, test, plot, advance, done };
-  static constexpr std::array<std::string_view, 10> lines = {
-      "d <- p1 - p0",
-      "a <- x if |dx| > |dy|, else y            -- ties step rows",
-      "if d_a < 0: swap p0 and p1, d <- -d      -- always walk upward along a",
-      "if d_a = 0: stop                         -- empty segment",
-      "dp <- d / d_a                            -- one unit along a per step",
-      "q <- p0 + (ceil(p0_a) - p0_a) * dp       -- start offset dp0 lands on the first column",
-      "while q_a < p1_a:",
-      "    plot (round(q_x), round(q_y))        -- round(v) = floor(v + 1/2)",
-      "    q <- q + dp",
-      "done",
-  };
-  static constexpr Listing listing() { return {"DDA line", lines}; }
+#define SW_LINES_DDA_LINE(X) \
+  X(delta, "d <- p1 - p0") \
+  X(major, "a <- x if |dx| > |dy|, else y            -- ties step rows") \
+  X(swap, "if d_a < 0: swap p0 and p1, d <- -d      -- always walk upward along a") \
+  X(empty, "if d_a = 0: stop                         -- empty segment") \
+  X(slope, "dp <- d / d_a                            -- one unit along a per step") \
+  X(offset, "q <- p0 + (ceil(p0_a) - p0_a) * dp       -- start offset dp0 lands on the first column") \
+  X(test, "while q_a < p1_a:") \
+  X(plot, "    plot (round(q_x), round(q_y))        -- round(v) = floor(v + 1/2)") \
+  X(advance, "    q <- q + dp") \
+  X(done, "done")
+  SW_LISTING("DDA line", SW_LINES_DDA_LINE)
+#undef SW_LINES_DDA_LINE
 };
 
 // Appends the pixels to `out`. Returns false if the loop bound stopped the walk (this happens only
@@ -73,4 +72,4 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
   return false;
 }
 
-}  // namespace sw::raster
+}  // namespace sw::lines

@@ -6,7 +6,7 @@
 #include <array>
 #include <string_view>
 #include "core/probe.hpp"
-#include "ray/ray_common.hpp"
+#include "rays/ray_common.hpp"
 
 namespace sw::ray {
 
@@ -19,19 +19,18 @@ template <class Num> struct SphereHit {
 struct RaySphereGeometric {
   static constexpr std::string_view id = "ray-sphere-geometric";
   static constexpr std::string_view summary = "Ray-sphere, implementor's guide: closest approach, inside/outside, half chord";
-  enum Line : std::uint32_t { oc = 1, inside, tca, behind, dist, reject, chord, root, hit };
-  static constexpr std::array<std::string_view, 9> lines = {
-      "L <- c - o; L2 <- L . L; a <- d . d",
-      "inside <- L2 < r^2; on <- L2 = r^2",
-      "tca <- L . d                                -- |d| times the closest-approach distance",
-      "if not inside and tca <= 0: miss            -- the sphere is behind (or only touches the origin)",
-      "m2 <- L2 - tca^2 / a                        -- squared distance from c to the line",
-      "if m2 > r^2: miss",
-      "h2 <- a (r^2 - m2)                          -- |d|^2 times the squared half chord",
-      "t <- (tca - sqrt(h2)) / a if outside, else (tca + sqrt(h2)) / a",
-      "hit at o + t d",
-  };
-  static constexpr Listing listing() { return {"Geometric ray-sphere", lines}; }
+#define SW_LINES_RAY_SPHERE_GEOMETRIC(X) \
+  X(oc, "L <- c - o; L2 <- L . L; a <- d . d") \
+  X(inside, "inside <- L2 < r^2; on <- L2 = r^2") \
+  X(tca, "tca <- L . d                                -- |d| times the closest-approach distance") \
+  X(behind, "if not inside and tca <= 0: miss            -- the sphere is behind (or only touches the origin)") \
+  X(dist, "m2 <- L2 - tca^2 / a                        -- squared distance from c to the line") \
+  X(reject, "if m2 > r^2: miss") \
+  X(chord, "h2 <- a (r^2 - m2)                          -- |d|^2 times the squared half chord") \
+  X(root, "t <- (tca - sqrt(h2)) / a if outside, else (tca + sqrt(h2)) / a") \
+  X(hit, "hit at o + t d")
+  SW_LISTING("Geometric ray-sphere", SW_LINES_RAY_SPHERE_GEOMETRIC)
+#undef SW_LINES_RAY_SPHERE_GEOMETRIC
 };
 
 template <class Num, class Probe = NoProbe>

@@ -4,7 +4,7 @@
 #include <array>
 #include <string_view>
 #include "core/probe.hpp"
-#include "ray/ray_common.hpp"
+#include "rays/ray_common.hpp"
 
 namespace sw::ray {
 
@@ -16,15 +16,14 @@ template <class Num> struct PlaneHit {
 struct RayPlane {
   static constexpr std::string_view id = "ray-plane";
   static constexpr std::string_view summary = "Ray-plane: t = n.(p - o) / n.d; parallel is a defined miss";
-  enum Line : std::uint32_t { denom = 1, parallel, num, behind, hit };
-  static constexpr std::array<std::string_view, 5> lines = {
-      "den <- n . d",
-      "if den = 0: miss                             -- parallel, or lying in the plane",
-      "num <- n . (p - o)",
-      "if num = 0 or sign(num) != sign(den): miss   -- t = num / den <= 0: behind, or o on the plane",
-      "hit: t <- num / den; the point o + t d",
-  };
-  static constexpr Listing listing() { return {"Ray-plane", lines}; }
+#define SW_LINES_RAY_PLANE(X) \
+  X(denom, "den <- n . d") \
+  X(parallel, "if den = 0: miss                             -- parallel, or lying in the plane") \
+  X(num, "num <- n . (p - o)") \
+  X(behind, "if num = 0 or sign(num) != sign(den): miss   -- t = num / den <= 0: behind, or o on the plane") \
+  X(hit, "hit: t <- num / den; the point o + t d")
+  SW_LISTING("Ray-plane", SW_LINES_RAY_PLANE)
+#undef SW_LINES_RAY_PLANE
 };
 
 template <class Num, class Probe = NoProbe>
@@ -40,7 +39,7 @@ template <class Num, class Probe = NoProbe>
     if constexpr (Probe::on) probe.step(L::parallel, StepKind::miss);
     return out;
   }
-  // Deciding t's sign from num and den keeps the decision a polynomial sign (docs/accuracy-rays.md).
+  // Deciding t's sign from num and den keeps the decision a polynomial sign (docs/rays/accuracy.md).
   const Num num = dot(n, Vec3<Num>(p - r.o));
   if constexpr (Probe::on) probe.step(L::num, StepKind::decide).num("num", num);
   if (num::sign(num) != den_sign) {  // num = 0 included: den_sign != 0
