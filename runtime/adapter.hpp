@@ -18,6 +18,9 @@
 //             static double error(const Output& got, const Output& exact), reported as max;
 //             static std::size_t estimate_steps(const Input&): an upper estimate the recorder
 //             reserves (reserved memory costs nothing until touched; regrowth copies it all);
+//             static Json canonical(Json result): the result in the form the oracle states it
+//             (e.g. a set sorted), for comparing with the oracle;
+//             static bool bench_runs(set name, Numeric): false skips a set in that mode;
 //             using Filters = std::tuple<number types for filtered mode> (default Interval): the
 //             stages of the filter, cheapest first. Each must throw Uncertain when it cannot
 //             decide, or raise its flag (Mag; see run_filter_stage), and have a NumericOf
@@ -133,6 +136,13 @@ template <class Spec, class Stages = typename FiltersOf<Spec>::type> struct Late
 template <class Spec, class... S> struct LaterInputs<Spec, std::tuple<S...>> {
   template <class N> using Column = std::vector<std::optional<decltype(Spec::template prepare<N>(std::declval<const typename Spec::Input&>()))>>;
   std::tuple<Column<S>..., Column<Rational>> columns;
+  // Columns are found by the stage's position, since two stages may prepare the same type.
+  template <class N> static constexpr std::size_t index() {
+    constexpr bool same[] = {std::is_same_v<N, S>..., false};
+    for (std::size_t k = 0; k < sizeof...(S); ++k)
+      if (same[k]) return k;
+    return sizeof...(S);
+  }
 
   LaterInputs(const std::vector<typename Spec::Input>& inputs, bool needed) {
     if (!needed) return;
@@ -141,14 +151,14 @@ template <class Spec, class... S> struct LaterInputs<Spec, std::tuple<S...>> {
     fill<Rational>(inputs);
   }
   template <class N> const auto& at(std::size_t i) const {
-    const auto& p = std::get<Column<N>>(columns)[i];
+    const auto& p = std::get<index<N>()>(columns)[i];
     if (!p) throw Uncertain{};
     return *p;
   }
 
  private:
   template <class N> void fill(const std::vector<typename Spec::Input>& inputs) {
-    auto& column = std::get<Column<N>>(columns);
+    auto& column = std::get<index<N>()>(columns);
     for (const auto& in : inputs) {
       try {
         column.emplace_back(Spec::template prepare<N>(in));
@@ -208,6 +218,8 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
   std::vector<BenchRow> rows;
   for (const auto& set : Spec::bench_sets()) {
     if (!only_set.empty() && set.name != only_set) continue;
+    if constexpr (requires { Spec::bench_runs(set.name, n); })
+      if (!Spec::bench_runs(set.name, n)) continue;
     BenchRow row;
     row.set = set.name;
     row.numeric = n;
@@ -299,6 +311,8 @@ template <class Spec> Algorithm make_algorithm() {
     }
   };
   a.oracle = [](const Json& j) { return Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact))); };
+  if constexpr (requires(Json r) { Spec::canonical(r); }) a.canonical = [](const Json& r) { return Spec::canonical(r); };
+  else a.canonical = [](const Json& r) { return r; };
   a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };
   return a;
 }

@@ -54,6 +54,8 @@ struct Algorithm {
   std::function<Json(const Json& input, Numeric)> run;  // untraced
   // The independent exact oracle's result for this input (brute force, oracle/).
   std::function<Json(const Json& input)> oracle;
+  // A result in the form the oracle states it (sorted, for results the oracle gives as a set).
+  std::function<Json(const Json& result)> canonical;
   // Times the untraced algorithm on the family's seeded bench sets (or only_set, if not empty),
   // against the exact mode.
   std::function<std::vector<BenchRow>(Numeric, int repeats, const std::string& only_set)> bench;

@@ -116,6 +116,14 @@ Vec3<Rational> parse_point3(const Json& obj, const char* key) {
   return {a[0], a[1], a[2]};
 }
 
+std::int64_t parse_integer(const Json& v, const std::string& what, std::int64_t lo, std::int64_t hi) {
+  const Rational q = parse_rational(v, what);
+  if (q.get_den() != 1) throw InputError(what + ": " + q.get_str() + " is not an integer");
+  if (q < Rational(lo) || q > Rational(hi))
+    throw InputError(what + ": " + q.get_str() + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return q.get_num().get_si();
+}
+
 void check_bound(const Rational& v, double bound, const std::string& what) {
   if (abs(v) > Rational(bound))
     throw InputError(what + ": " + v.get_str() + " is beyond the bound " + num::to_text(bound));

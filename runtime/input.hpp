@@ -29,6 +29,8 @@ void only_keys(const Json& obj, std::initializer_list<const char*> keys, const s
 const Json& require(const Json& obj, const char* key, const std::string& what);
 Vec2<Rational> parse_point2(const Json& obj, const char* key);
 Vec3<Rational> parse_point3(const Json& obj, const char* key);
+// An integer in [lo, hi] (a JSON integer, an integral number or an exact string such as "7").
+std::int64_t parse_integer(const Json& v, const std::string& what, std::int64_t lo, std::int64_t hi);
 // Throws unless |v| <= bound.
 void check_bound(const Rational& v, double bound, const std::string& what);
 

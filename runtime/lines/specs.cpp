@@ -1,6 +1,7 @@
 // The line family's catalog entries: dda-line, dda-grid-walk, bresenham-line.
 #include <random>
 #include "adapter.hpp"
+#include "pixels.hpp"
 #include "lines_oracle.hpp"
 #include "lines/bresenham_line.hpp"
 #include "lines/dda_grid_walk.hpp"
@@ -30,11 +31,6 @@ SegmentInput parse_segment(const Json& j, Numeric n, bool integer_endpoints) {
   return in;
 }
 
-struct PixelsOutput {
-  std::vector<Pixel> pixels;
-  bool finished = true;  // false: the loop bound stopped the walk
-  friend bool operator==(const PixelsOutput&, const PixelsOutput&) = default;
-};
 
 // Seeded bench sets: short random segments with fractional (or integer) endpoints, and long lines.
 std::vector<BenchSet<SegmentInput>> segment_bench_sets(bool integer_endpoints) {
@@ -74,20 +70,6 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
     return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 16;
   }
   static std::vector<BenchSet<Input>> bench_sets() { return segment_bench_sets(IntegerEndpoints); }
-  // Result members written straight to the stream: a long line's result is held once, as pixels.
-  static void pixels_members(const char* key, const Output& o, std::ostream& os) {
-    os << '"' << key << "\":[";
-    for (std::size_t i = 0; i < o.pixels.size(); ++i) os << (i ? ",[" : "[") << o.pixels[i].x << ',' << o.pixels[i].y << ']';
-    os << ']';
-    if (!o.finished) os << ",\"bound_hit\":true";
-  }
-  static Json pixels_json(const char* key, const Output& o) {
-    Json a = Json::array();
-    for (Pixel p : o.pixels) a.push_back({p.x, p.y});
-    Json r{{key, std::move(a)}};
-    if (!o.finished) r["bound_hit"] = true;
-    return r;
-  }
 };
 
 struct DdaLineSpec : SegmentSpec<lines::DdaLine, false> {

@@ -315,12 +315,6 @@ struct CameraInput {
   ray::Projection projection = ray::Projection::perspective;
 };
 
-std::int64_t parse_index(const Json& v, const std::string& what, std::int64_t lo, std::int64_t hi) {
-  if (!v.is_number_integer()) throw InputError(what + ": expected an integer");
-  const std::int64_t x = v.get<std::int64_t>();
-  if (x < lo || x > hi) throw InputError(what + ": " + std::to_string(x) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return x;
-}
 
 CameraInput parse_camera(const Json& j) {
   only_keys(j, {"camera", "pixel", "size", "projection"}, "input");
@@ -349,10 +343,10 @@ CameraInput parse_camera(const Json& j) {
   const Json& px = j["pixel"];
   if (!size.is_array() || size.size() != 2) throw InputError("input.size: expected [W, H]");
   if (!px.is_array() || px.size() != 2) throw InputError("input.pixel: expected [i, j]");
-  in.w = parse_index(size[0], "input.size[0]", 1, 1 << 20);
-  in.h = parse_index(size[1], "input.size[1]", 1, 1 << 20);
-  in.i = parse_index(px[0], "input.pixel[0]", 0, in.w - 1);
-  in.j = parse_index(px[1], "input.pixel[1]", 0, in.h - 1);
+  in.w = parse_integer(size[0], "input.size[0]", 1, 1 << 20);
+  in.h = parse_integer(size[1], "input.size[1]", 1, 1 << 20);
+  in.i = parse_integer(px[0], "input.pixel[0]", 0, in.w - 1);
+  in.j = parse_integer(px[1], "input.pixel[1]", 0, in.h - 1);
   return in;
 }
 

@@ -1,0 +1,143 @@
+#include "curves_oracle.hpp"
+#include <CGAL/Gmpq.h>
+#include <algorithm>
+#include <stdexcept>
+
+namespace sw::oracle {
+namespace {
+
+using Q = CGAL::Gmpq;
+static_assert(sizeof(long) >= sizeof(std::int64_t), "mpz get_si must hold an int64");
+
+Q q(const Rational& v) { return Q(v.get_mpq_t()); }
+
+// round(v) = floor(v + 1/2), exactly; throws if the result does not fit a pixel index.
+std::int64_t round_q(const Q& v) {
+  const Rational w(Q(v + Q(1, 2)).mpq());
+  mpz_class f;
+  mpz_fdiv_q(f.get_mpz_t(), w.get_num_mpz_t(), w.get_den_mpz_t());
+  if (!mpz_fits_slong_p(f.get_mpz_t())) throw std::overflow_error("poly_pixels: round(y) out of int64 range");
+  return f.get_si();
+}
+
+// --- Per-row statements, on GMP integers. Each row is computed on its own from r and y. ---
+
+// X(y) of the midpoint circle. For D = r^2 - y^2 > 0 the odd square (2k - 1)^2 never equals the
+// even 4D, so (2k - 1)^2 < 4D iff 2k - 1 <= isqrt(4D): k = (isqrt(4D) + 1) / 2. The two loops only
+// re-establish the definition's two inequalities should that reasoning ever be off; they never run.
+std::int64_t midpoint_row(const mpz_class& r, std::int64_t y) {
+  const mpz_class yy = y;
+  const mpz_class four_d = 4 * (r * r - yy * yy);
+  if (four_d <= 0) return 0;  // only the k == 0 clause holds
+  mpz_class k = (sqrt(four_d) + 1) / 2;
+  auto sq = [](const mpz_class& m) { return mpz_class(m * m); };
+  while (k > 0 && sq(2 * k - 1) >= four_d) --k;
+  while (sq(2 * k + 1) < four_d) ++k;
+  return k.get_si();
+}
+
+// I(y) of the interior border: isqrt(r^2 - y^2), or -1 when r^2 - y^2 < 0 (no k >= 0 exists).
+std::int64_t interior_row(const mpz_class& r, std::int64_t y) {
+  const mpz_class yy = y;
+  const mpz_class d = r * r - yy * yy;
+  if (d < 0) return -1;
+  mpz_class k = sqrt(d);
+  while (k > 0 && k * k > d) --k;
+  while ((k + 1) * (k + 1) <= d) ++k;
+  return k.get_si();
+}
+
+// O's rows y = 0, 1, ... while y <= row(y), their 8 mirror images moved to the centre, distinct and
+// sorted. row(y) <= r, so at most r + 1 rows are visited.
+template <class Row> std::vector<Pixel> octant_images(std::int64_t cx, std::int64_t cy, std::int64_t r, Row row) {
+  std::vector<Pixel> out;
+  if (r < 0) return out;
+  const mpz_class rz = r;
+  for (std::int64_t y = 0;; ++y) {
+    const std::int64_t k = row(rz, y);
+    if (y > k) break;
+    const std::int64_t x = -k;
+    for (const Pixel p : {Pixel{x, y}, Pixel{-x, y}, Pixel{x, -y}, Pixel{-x, -y}, Pixel{y, x}, Pixel{-y, x},
+                          Pixel{y, -x}, Pixel{-y, -x}})
+      out.push_back({cx + p.x, cy + p.y});
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// --- Brute-force statements, on __int128 (squares of anything below 2^62 fit). Small r only. ---
+
+__extension__ typedef __int128 I128;  // GCC/Clang extension; marked so -Wpedantic stays quiet
+
+// X(t) for t = 0 .. r + 1 by scanning every candidate: the k >= 1 whose odd neighbours bracket 4D,
+// (2k - 1)^2 < 4D < (2k + 1)^2; 0 when no k does (D <= 0).
+std::vector<std::int64_t> midpoint_table(std::int64_t r) {
+  std::vector<std::int64_t> t(static_cast<std::size_t>(r + 2), 0);
+  for (std::int64_t i = 0; i <= r + 1; ++i) {
+    const I128 four_d = 4 * (I128(r) * r - I128(i) * i);
+    for (std::int64_t k = 1; k <= r + 1; ++k) {
+      const I128 lo = I128(2 * k - 1) * (2 * k - 1), hi = I128(2 * k + 1) * (2 * k + 1);
+      if (lo < four_d && four_d < hi) t[static_cast<std::size_t>(i)] = k;
+    }
+  }
+  return t;
+}
+
+// I(t) for t = 0 .. r + 1 by scanning: the k >= 0 with k^2 <= D < (k + 1)^2; -1 when D < 0.
+std::vector<std::int64_t> interior_table(std::int64_t r) {
+  std::vector<std::int64_t> t(static_cast<std::size_t>(r + 2), -1);
+  for (std::int64_t i = 0; i <= r + 1; ++i) {
+    const I128 d = I128(r) * r - I128(i) * i;
+    for (std::int64_t k = 0; k <= r + 1; ++k)
+      if (I128(k) * k <= d && d < I128(k + 1) * (k + 1)) t[static_cast<std::size_t>(i)] = k;
+  }
+  return t;
+}
+
+// Keeps each pixel of the box that is its row's pixel in the flat part (|y| <= |x|) or its
+// column's pixel in the steep part (|x| <= |y|). Scanning x then y ascending yields sorted output.
+std::vector<Pixel> box_scan(std::int64_t cx, std::int64_t cy, std::int64_t r, const std::vector<std::int64_t>& t) {
+  std::vector<Pixel> out;
+  if (r < 0) return out;
+  const auto at = [&](std::int64_t i) { return t[static_cast<std::size_t>(i)]; };
+  for (std::int64_t x = -r - 1; x <= r + 1; ++x)
+    for (std::int64_t y = -r - 1; y <= r + 1; ++y) {
+      const std::int64_t ax = x < 0 ? -x : x, ay = y < 0 ? -y : y;
+      if ((ay <= ax && ax == at(ay)) || (ax <= ay && ay == at(ax))) out.push_back({cx + x, cy + y});
+    }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Pixel> poly_pixels(const std::array<Rational, 4>& coeffs, std::int64_t xs, std::int64_t xe) {
+  const Q a = q(coeffs[0]), b = q(coeffs[1]), c = q(coeffs[2]), d = q(coeffs[3]);
+  std::vector<Pixel> out;
+  for (std::int64_t x = xs; x < xe; ++x) {  // x < xe, so ++x cannot overflow
+    const Q v(x);
+    // Each power from scratch: nothing is carried between columns.
+    out.push_back({x, round_q(a * v * v * v + b * v * v + c * v + d)});
+  }
+  return out;
+}
+
+std::vector<Pixel> circle_midpoint_pixels(std::int64_t cx, std::int64_t cy, std::int64_t r) {
+  return octant_images(cx, cy, r, midpoint_row);
+}
+
+std::vector<Pixel> circle_interior_pixels(std::int64_t cx, std::int64_t cy, std::int64_t r) {
+  return octant_images(cx, cy, r, interior_row);
+}
+
+std::vector<Pixel> circle_midpoint_brute_force(std::int64_t cx, std::int64_t cy, std::int64_t r) {
+  if (r < 0) return {};
+  return box_scan(cx, cy, r, midpoint_table(r));
+}
+
+std::vector<Pixel> circle_interior_brute_force(std::int64_t cx, std::int64_t cy, std::int64_t r) {
+  if (r < 0) return {};
+  return box_scan(cx, cy, r, interior_table(r));
+}
+
+}  // namespace sw::oracle
