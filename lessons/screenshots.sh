@@ -14,3 +14,5 @@ shot 03-bresenham 14       # the decision variable e after a minor step
 shot 04-float-drift 3939   # the first pixel where float and exact differ
 shot 05-triangle-crack     # (ray family) the lesson's start step
 shot 06-far-sphere         # (ray family) the lesson's start step
+shot 07-midpoint-circle        # the decision after the first rows
+shot 08-forward-difference-drift  # the first pixel where float and exact differ

@@ -215,6 +215,18 @@ void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
     const ImVec2 a = to_screen(double(px->x) - 0.5, double(px->y) + 0.5), b = to_screen(double(px->x) + 0.5, double(px->y) - 0.5);
     dl->AddRect(ImVec2(a.x - 1, a.y - 1), ImVec2(b.x + 1, b.y + 1), theme::kCurrentPixel, 0, 0, 2.5f);
   }
+  const ImU32 shape_col = scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment;
+  for (const TraceModel::Shape2D& sh : m.shapes()) {
+    const auto& v = sh.values;
+    if (sh.kind == GeoKind::circle) {
+      const ImVec2 c = to_screen(v[0], v[1]);
+      dl->AddCircle(c, float(v[2] * scale_), shape_col, std::clamp(int(v[2] * scale_), 24, 512), 2.f);
+      continue;
+    }
+    std::vector<ImVec2> pts;
+    for (std::size_t k = 0; k + 1 < v.size(); k += 2) pts.push_back(to_screen(v[k], v[k + 1]));
+    dl->AddPolyline(pts.data(), int(pts.size()), shape_col, sh.kind == GeoKind::polygon ? ImDrawFlags_Closed : ImDrawFlags_None, 2.f);
+  }
   if (auto seg = m.segment()) {
     const ImVec2 a = to_screen((*seg)[0], (*seg)[1]), b = to_screen((*seg)[2], (*seg)[3]);
     // Zoomed out, the pixels are thinner than the segment: draw it faint so that they show.
@@ -238,11 +250,7 @@ void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
   }
 }
 
-// [SECTION] the placeholder canvas and make_canvas
-
-namespace {
-
-}  // namespace
+// [SECTION] make_canvas
 
 std::unique_ptr<Canvas> make_canvas(View view, TextureHost& textures) {
   switch (view) {

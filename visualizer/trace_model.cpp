@@ -34,6 +34,17 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
         if (!segment_) segment_ = v;
         bounds_.add(v[0], v[1]);
         bounds_.add(v[2], v[3]);
+      } else if ((geo.kind == GeoKind::circle || geo.kind == GeoKind::polyline || geo.kind == GeoKind::polygon) && shapes_.size() < kMaxShapes) {
+        // Continuous shapes the algorithm declares once (the exact circle, the exact curve).
+        Shape2D sh{geo.kind, {}};
+        for (std::uint32_t k = 0; k < geo.count; ++k) sh.values.push_back(t.geo_double(geo, static_cast<int>(k)));
+        if (geo.kind == GeoKind::circle) {
+          bounds_.add(sh.values[0] - sh.values[2], sh.values[1] - sh.values[2]);
+          bounds_.add(sh.values[0] + sh.values[2], sh.values[1] + sh.values[2]);
+        } else {
+          for (std::size_t k = 0; k + 1 < sh.values.size(); k += 2) bounds_.add(sh.values[k], sh.values[k + 1]);
+        }
+        shapes_.push_back(std::move(sh));
       }
     }
     // Names are string literals; compare contents so that equal names from two sites merge.

@@ -58,6 +58,13 @@ class TraceModel {
 
   // The first segment in the trace (the input segment for lines), as x0 y0 x1 y1.
   std::optional<std::array<double, 4>> segment() const { return segment_; }
+  // Circles, polylines and polygons the trace declares, as doubles (at most kMaxShapes).
+  struct Shape2D {
+    GeoKind kind;
+    std::vector<double> values;
+  };
+  static constexpr std::size_t kMaxShapes = 64;
+  const std::vector<Shape2D>& shapes() const { return shapes_; }
   // The latest 2D point at or before `step` (the q of a DDA), searching back a bounded way.
   std::optional<std::array<double, 2>> point_at(std::size_t step) const;
   // The pixel geometry carried by `step`, if any.
@@ -82,6 +89,7 @@ class TraceModel {
   std::vector<PlotEvent> by_cell_;  // sorted by cell, for hover lookups
   WorldRect bounds_;
   std::optional<std::array<double, 4>> segment_;
+  std::vector<Shape2D> shapes_;
   std::vector<std::string_view> names_;
   std::vector<std::uint8_t> name_of_var_;        // var record -> index into names_
   std::vector<std::uint32_t> checkpoints_;       // names_.size() entries per checkpoint

@@ -3,6 +3,7 @@
 // docs/curves/semantics.md (the guide's listing adds the third difference to itself; we add it
 // to the second, as the table requires).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string_view>
@@ -27,6 +28,17 @@ template <class Num> Num horner(const std::array<Num, 4>& c, const Num& x) {
   return y;
 }
 
+// Points on the curve for the canvas: n + 1 samples from xs to xe, n = 8 per column, at most 512.
+template <class Num> std::vector<Vec2<Num>> curve_samples(const Cubic<Num>& p) {
+  const std::int64_t n = std::clamp<std::int64_t>(8 * (p.xe - p.xs), 1, 512);
+  std::vector<Vec2<Num>> pts;
+  for (std::int64_t k = 0; k <= n; ++k) {
+    const Num x = Num(Num(p.xs) + Num(Num(p.xe - p.xs) * Num(k)) / Num(n));
+    pts.push_back({x, horner(p.c, x)});
+  }
+  return pts;
+}
+
 struct PolyForwardDiff {
   static constexpr std::string_view id = "poly-forward-diff";
   static constexpr std::string_view summary = "Cubic y = P(x) by a forward-difference table: three additions per pixel";
@@ -47,7 +59,8 @@ void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& prob
   using L = PolyForwardDiff;
   std::array<Num, 4> y;
   for (int k = 0; k < 4; ++k) y[k] = horner(p.c, Num(Num(p.xs) + Num(k)));
-  if constexpr (Probe::on) probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]);
+  if constexpr (Probe::on)
+    probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]).geo_list(GeoKind::polyline, curve_samples(p));
   const Num e0 = Num(y[1] - y[0]), e1 = Num(y[2] - y[1]), e2 = Num(y[3] - y[2]);
   Num d1 = e0, d2 = Num(e1 - e0);
   const Num d3 = Num(Num(e2 - e1) - d2);

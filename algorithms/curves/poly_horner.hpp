@@ -22,7 +22,10 @@ void poly_horner(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   using L = PolyHorner;
   for (std::int64_t x = p.xs; x < p.xe; ++x) {  // bounded: xe - xs is validated
     const Num y = horner(p.c, Num(x));
-    if constexpr (Probe::on) probe.step(L::eval, StepKind::advance).idx("x", x).num("y", y);
+    if constexpr (Probe::on) {
+      auto& st = probe.step(L::eval, StepKind::advance).idx("x", x).num("y", y);
+      if (x == p.xs) st.geo_list(GeoKind::polyline, curve_samples(p));  // the exact curve, once
+    }
     const Pixel px{x, num::floor_int(Num(y + Num(0.5)))};
     out.push_back(px);
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("x", x).idx("j", px.y).pixel(px).point(Vec2<Num>{Num(x), y});

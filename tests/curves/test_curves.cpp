@@ -295,7 +295,20 @@ TEST_CASE("curves: every value a cubic step records matches its closed form", "[
           FAIL("no expectation for line " << line);
         }
         require_all_checked(sv, s);
-        if (line != "plot") CHECK(t.at(s).geo_end == t.at(s).geo_begin);
+        // Geometry: the exact curve once (on the first step that has it), pixels and points on plot.
+        for (std::uint32_t g = t.at(s).geo_begin; g < t.at(s).geo_end; ++g) {
+          const GeoRecord& geo = t.geo_at(g);
+          if (line == "plot") {
+            CHECK((geo.kind == GeoKind::pixel || geo.kind == GeoKind::point2));
+            continue;
+          }
+          REQUIRE(geo.kind == GeoKind::polyline);
+          CHECK((line == "samples" || (line == "eval" && x == xs)));
+          REQUIRE(geo.count >= 4);
+          CHECK(t.num_value(geo.slot) == xs);
+          CHECK(t.num_value(geo.slot + geo.count - 2) == xe);
+          for (std::uint32_t k = 0; k < geo.count; k += 2) CHECK(t.num_value(geo.slot + k + 1) == P(c, t.num_value(geo.slot + k)));
+        }
       }
       CHECK(plotted == out);
       CHECK(out.size() == static_cast<std::size_t>(xe - xs));
