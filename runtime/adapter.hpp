@@ -65,6 +65,7 @@ template <class Spec, class F> auto with_number_type(Numeric n, F&& f) {
     case Numeric::integer: if constexpr (spec_has<Spec>(Numeric::integer)) return f(std::type_identity<std::int64_t>{}); break;
     case Numeric::filtered: if constexpr (spec_has<Spec>(Numeric::filtered)) return f(std::type_identity<FirstFilter<Spec>>{}); break;
     case Numeric::exact: if constexpr (spec_has<Spec>(Numeric::exact)) return f(std::type_identity<Rational>{}); break;
+    case Numeric::reference: if constexpr (spec_has<Spec>(Numeric::reference)) return f(std::type_identity<Rational>{}); break;
   }
   throw InputError(std::string(Spec::Algo::id) + " does not run on '" + std::string(numeric_name(n)) + "'");
 }

@@ -30,7 +30,7 @@ Numeric parse_numeric_for(const Algorithm& alg, std::string_view name) {
   std::string modes;
   for (Numeric n : alg.numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
   auto n = parse_numeric(name);
-  if (!n) throw InputError("unknown numeric mode '" + std::string(name) + "' (known: float, double, int, filtered, exact)");
+  if (!n) throw InputError("unknown numeric mode '" + std::string(name) + "' (known: float, double, int, filtered, exact, reference)");
   if (!alg.supports(*n))
     throw InputError(std::string(alg.id) + " does not run on '" + std::string(name) + "' (it runs on: " + modes + ")");
   return *n;

@@ -1,9 +1,15 @@
 #include "trace_io.hpp"
+#include <cstdio>
 #include <functional>
+#include <optional>
 #include <random>
 #include <sstream>
 
 namespace sw {
+
+namespace {
+Rational mode_tolerance(Numeric n);
+}  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   std::random_device rd;
@@ -30,10 +36,15 @@ void AtomicFile::commit() {
 std::string trace_header(const Algorithm& alg, Numeric n, const Json& input) {
   nlohmann::ordered_json h;  // keeps the documented key order
   h["format"] = "stepwise-trace";
-  h["version"] = 1;
+  h["version"] = 2;
   h["algorithm"] = alg.id;
   h["numeric"] = numeric_name(n);
   h["input"] = nlohmann::ordered_json::parse(input.dump());
+  // How closely `check` holds this trace's numbers to the replay's (0: exactly).
+  h["tolerance"] = mode_tolerance(n).get_str();
+  nlohmann::ordered_json names = nlohmann::ordered_json::array();
+  for (const ListingLine& l : alg.listing.lines) names.push_back(l.name);
+  h["listing"] = std::move(names);  // step "line" k is listing[k - 1]
   return h.dump();
 }
 
@@ -62,37 +73,96 @@ std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::os
 
 namespace {
 
-struct Divergence {
-  std::string what;
+// How closely a trace's numbers must match the replay's. Integers (indices, flags) and decision
+// geometry (pixels, spans) always match exactly; numbers within rel * (1 + |expected|).
+struct Tolerance {
+  Rational rel;         // 0: exactly
+  bool numbers = true;  // false: --decisions-only, numbers are not compared
 };
 
-// A JSON value read as an exact rational (numbers exactly as the double they are).
-Rational as_rational(const Json& v, const std::string& what) { return parse_rational(v, what); }
+// The tolerance for a trace in mode n (docs/trace-format.md): exact and int traces are exact;
+// float, double and filtered traces are rounded by design; reference traces carry 2^-200.
+Rational mode_tolerance(Numeric n) {
+  auto pow2 = [](int e) { return Rational(1, mpz_class(1) << e); };
+  switch (n) {
+    case Numeric::f32: return pow2(10);
+    case Numeric::f64:
+    case Numeric::filtered: return pow2(36);
+    case Numeric::reference: return pow2(200);
+    case Numeric::integer:
+    case Numeric::exact: return 0;
+  }
+  return 0;
+}
 
-// Structural equality where numbers compare as exact rationals. "fallback" is informational.
-bool same_value(const Json& a, const Json& b) {
-  const bool na = a.is_number() || a.is_string(), nb = b.is_number() || b.is_string();
-  if (na && nb) {
-    try {
-      return as_rational(a, "") == as_rational(b, "");
-    } catch (const InputError&) {
-      return a == b;
+// Nesting depth of a JSON value, without recursion: readers and printers below recurse at most
+// this deep, so a trace nested 10^5 levels is refused before anything recurses into it.
+constexpr std::size_t kMaxNesting = 64;
+std::size_t nesting(const Json& root) {
+  std::vector<std::pair<const Json*, std::size_t>> todo{{&root, 1}};
+  std::size_t deepest = 0;
+  while (!todo.empty()) {
+    const auto [j, d] = todo.back();
+    todo.pop_back();
+    deepest = std::max(deepest, d);
+    if (d > kMaxNesting) return d;
+    if (j->is_structured())
+      for (const Json& c : *j) todo.push_back({&c, d + 1});
+  }
+  return deepest;
+}
+
+// A value for a person: the text, and for rationals that are not integers "~ decimal" beside it.
+std::string show(const Json& v) {
+  std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  if (text.size() > 80) text = text.substr(0, 77) + "...";
+  try {
+    const Rational q = parse_rational(v, "");
+    if (q.get_den() != 1 || v.is_string()) {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "%.9g", q.get_d());
+      if (text != buf) text += std::string(" (~ ") + buf + ")";
     }
+  } catch (const InputError&) {
   }
-  if (a.is_array() && b.is_array()) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (!same_value(a[i], b[i])) return false;
-    return true;
+  return text;
+}
+
+// Compares the replay's value `want` with the trace's `got`; says what differs, or nothing. `exact`
+// forces an exact comparison of numbers (integers, decision geometry).
+std::optional<std::string> value_diff(const Json& want, const Json& got, const Tolerance& tol, bool exact, const std::string& path, std::size_t depth = 0) {
+  auto differ = [&](const std::string& why) { return std::optional<std::string>(path + ": " + why); };
+  if (depth > kMaxNesting) return differ("nested too deeply");
+  const bool wn = want.is_number() || want.is_string(), gn = got.is_number() || got.is_string();
+  if (wn && gn) {
+    Rational w, g;
+    try {
+      w = parse_rational(want, path), g = parse_rational(got, path);
+    } catch (const InputError&) {
+      return want == got ? std::nullopt : differ("expected " + show(want) + ", got " + show(got));
+    }
+    if (w == g || (!exact && !want.is_number_integer() && tol.rel > 0 && abs(Rational(g - w)) <= tol.rel * (1 + abs(w)))) return std::nullopt;
+    std::string why = "expected " + show(want) + ", got " + show(got);
+    if (!exact && tol.rel > 0) why += " (beyond the tolerance " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))";
+    return differ(why);
   }
-  if (a.is_object() && b.is_object()) {
-    for (auto it = a.begin(); it != a.end(); ++it)
-      if (it.key() != "fallback" && (!b.contains(it.key()) || !same_value(*it, b[it.key()]))) return false;
-    for (auto it = b.begin(); it != b.end(); ++it)
-      if (it.key() != "fallback" && !a.contains(it.key())) return false;
-    return true;
+  if (want.is_array() && got.is_array()) {
+    if (want.size() != got.size()) return differ("expected " + std::to_string(want.size()) + " entries, got " + std::to_string(got.size()));
+    for (std::size_t i = 0; i < want.size(); ++i)
+      if (auto d = value_diff(want[i], got[i], tol, exact, path + "[" + std::to_string(i) + "]", depth + 1)) return d;
+    return std::nullopt;
   }
-  return a == b;
+  if (want.is_object() && got.is_object()) {
+    for (auto it = want.begin(); it != want.end(); ++it) {
+      if (it.key() == "fallback") continue;  // informational
+      if (!got.contains(it.key())) return differ("missing \"" + it.key() + "\"");
+      if (auto d = value_diff(*it, got[it.key()], tol, exact, path + "." + it.key(), depth + 1)) return d;
+    }
+    for (auto it = got.begin(); it != got.end(); ++it)
+      if (it.key() != "fallback" && !want.contains(it.key())) return differ("unexpected \"" + it.key() + "\"");
+    return std::nullopt;
+  }
+  return want == got ? std::nullopt : differ("expected " + show(want) + ", got " + show(got));
 }
 
 // Calls back once per line written to it: `check` watches the exact run's JSONL as it is made.
@@ -125,32 +195,38 @@ struct Diverged {
   std::string message;
 };
 
-// Does the trace's step agree with the reference step?
-bool step_agrees(const Json& want, const Json& got, bool decisions_only) {
-  if (got.at("line") != want.at("line") || got.at("kind") != want.at("kind")) return false;
+// What differs between the replay's step and the trace's, or nothing. Names the field.
+std::optional<std::string> step_diff(const Json& want, const Json& got, const Tolerance& tol, const Listing& listing) {
+  auto line_name = [&](const Json& l) {
+    const auto id = l.get<std::int64_t>();
+    return l.dump() + (id >= 1 && id <= static_cast<std::int64_t>(listing.lines.size()) ? " (" + std::string(listing.lines[id - 1].name) + ")" : "");
+  };
+  if (got.at("line") != want.at("line")) return "line: expected " + line_name(want.at("line")) + ", got " + line_name(got.at("line"));
+  if (got.at("kind") != want.at("kind")) return "kind: expected " + want.at("kind").dump() + ", got " + got.at("kind").dump();
   const Json& wv = want.at("vars");
   const Json& gv = got.at("vars");
-  if (wv.size() != gv.size()) return false;
   for (auto it = wv.begin(); it != wv.end(); ++it) {
-    if (!gv.contains(it.key())) return false;
-    const bool is_int = it->is_number_integer();
-    if (decisions_only && !is_int) continue;
-    if (!same_value(*it, gv[it.key()])) return false;
+    if (!gv.contains(it.key())) return "variable " + it.key() + ": missing";
+    const bool is_int = it->is_number_integer();  // the replay writes integers bare, numbers as strings
+    if (!tol.numbers && !is_int) continue;
+    if (auto d = value_diff(*it, gv[it.key()], tol, is_int, "variable " + it.key())) return d;
   }
+  for (auto it = gv.begin(); it != gv.end(); ++it)
+    if (!wv.contains(it.key())) return "variable " + it.key() + ": not recorded by the algorithm at this step";
   const Json& wg = want.at("geo");
   const Json& gg = got.at("geo");
-  if (wg.size() != gg.size()) return false;
+  if (wg.size() != gg.size()) return "geo: expected " + std::to_string(wg.size()) + " items, got " + std::to_string(gg.size());
   for (std::size_t k = 0; k < wg.size(); ++k) {
     const auto first = wg[k].begin();  // each geometry item is a one-key object
     const std::string name = first.key();
-    const Json& values = first.value();
-    if (!gg[k].is_object() || gg[k].size() != 1 || !gg[k].contains(name)) return false;
+    const std::string path = "geo[" + std::to_string(k) + "]." + name;
+    if (!gg[k].is_object() || gg[k].size() != 1 || !gg[k].contains(name)) return path + ": expected a \"" + name + "\" item, got " + show(gg[k]);
     const auto kind = parse_geo(name);
-    if (!kind) return false;
-    if (decisions_only && !geo_desc(*kind).decision) continue;  // the vocabulary's rule
-    if (!same_value(values, gg[k][name])) return false;
+    const bool decision = kind && geo_desc(*kind).decision;  // the vocabulary's rule
+    if (!tol.numbers && !decision) continue;
+    if (auto d = value_diff(first.value(), gg[k][name], tol, decision, path)) return d;
   }
-  return true;
+  return std::nullopt;
 }
 
 void require_step_shape(const Json& j, std::size_t lineno) {
@@ -184,23 +260,38 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
     return parse_json_text(line, "line " + std::to_string(lineno));
   };
   auto is_result = [](const Json& j) { return j.is_object() && j.contains("result"); };
+  auto bounded = [&](Json j) {
+    if (nesting(j) > kMaxNesting) throw InputError("line " + std::to_string(lineno) + ": nested more than " + std::to_string(kMaxNesting) + " levels deep");
+    return j;
+  };
   try {
     auto header = next_line();
     if (!header) throw InputError("empty trace");
+    bounded(*header);
     if (!header->is_object() || header->value("format", "") != "stepwise-trace")
       throw InputError("line 1: not a stepwise trace header (\"format\":\"stepwise-trace\")");
-    if (header->value("version", 0) != 1) throw InputError("line 1: unsupported version (expected 1)");
+    const Json version = header->value("version", Json());
+    if (version != 1 && version != 2) throw InputError("line 1: unsupported version (expected 1 or 2)");
     const Algorithm& alg = find_algorithm(require(*header, "algorithm", "line 1").get<std::string>());
     const Json& numeric = require(*header, "numeric", "line 1");
     if (!numeric.is_string()) throw InputError("line 1: \"numeric\" must be a string");
-    parse_numeric_for(alg, numeric.get<std::string>());
+    const Numeric mode = parse_numeric_for(alg, numeric.get<std::string>());
     const Json input = require(*header, "input", "line 1");
-    if (!alg.supports(Numeric::exact))
-      throw InputError("check replays in exact mode, and " + std::string(alg.id) + " has none");
-    alg.validate(input, Numeric::exact);
+    // The replay: exact where the algorithm has it, else the reference (transcendental values).
+    const Numeric replay_mode = alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
+    if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
+    alg.validate(input, replay_mode);
+    const Tolerance tol{mode_tolerance(mode), !decisions_only};
+    const bool rounded = tol.rel > 0 && mode != Numeric::reference;
+    auto diverged = [&](const std::string& where, const std::string& what) {
+      std::string m = where + " diverges (trace line " + std::to_string(lineno) + "): " + what;
+      if (rounded && what.find("beyond the tolerance") != std::string::npos)
+        m += "; only values differ: --decisions-only compares the decisions alone";
+      return Diverged{m};
+    };
 
-    // Replay: the exact run streams its steps; each is compared with the trace's next line as it
-    // is made, so memory stays flat however long the trace.
+    // Replay: the reference run streams its steps; each is compared with the trace's next line as
+    // it is made, so memory stays flat however long the trace.
     std::size_t i = 0;
     std::optional<Json> pending;  // a trace line read but not yet matched
     LineSink sink([&](const std::string& text) {
@@ -211,31 +302,31 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
         return;
       }
       const Json want = Json::parse(text);
-      pending = parse_json_text(line, "line " + std::to_string(lineno));
-      if (is_result(*pending))
-        throw Diverged{"step " + std::to_string(i) + " diverges: expected " + want.dump() + " got the end of the steps"};
+      pending = bounded(parse_json_text(line, "line " + std::to_string(lineno)));
+      const std::string where = "step " + std::to_string(i);
+      if (is_result(*pending)) throw diverged(where, "the trace ends its steps here; the algorithm has more");
       require_step_shape(*pending, lineno);
-      if (!step_agrees(want, *pending, decisions_only))
-        throw Diverged{"step " + std::to_string(i) + " diverges: expected " + want.dump() + " got " + pending->dump()};
+      if (auto d = step_diff(want, *pending, tol, alg.listing)) throw diverged(where, *d);
       pending.reset();
       ++i;
     });
     std::ostream replay(&sink);
     replay.exceptions(std::ios::badbit);  // let Diverged and InputError through the stream
-    alg.stream(input, Numeric::exact, replay);
+    alg.stream(input, replay_mode, replay);
 
     auto last = next_line();
+    if (last) bounded(*last);
     if (last && !is_result(*last)) {
       require_step_shape(*last, lineno);
-      throw Diverged{"step " + std::to_string(i) + " diverges: expected the end of the steps, got " + last->dump()};
+      throw diverged("step " + std::to_string(i), "the algorithm ends its steps here; the trace has more");
     }
     if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
     if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
     const Json oracle = alg.oracle(input);
-    if (!same_value(alg.canonical(oracle), alg.canonical((*last)["result"])))
-      throw Diverged{"result diverges: expected " + oracle.dump() + " got " + (*last)["result"].dump()};
+    if (auto d = value_diff(alg.canonical(oracle), alg.canonical((*last)["result"]), tol, false, "result")) throw diverged("result", *d);
     rep.steps = i;
-    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the exact oracle";
+    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::exact ? "exact oracle" : "reference") +
+                  (tol.rel > 0 && tol.numbers ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))" : "");
   } catch (const Diverged& d) {
     rep.status = 1;
     rep.message = d.message;

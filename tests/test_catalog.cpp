@@ -3,9 +3,11 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <set>
 #include "catalog.hpp"
 #include "cli_harness.hpp"
+#include "trace_io.hpp"
 
 using namespace sw;
 
@@ -97,4 +99,23 @@ TEST_CASE("catalog: the README's algorithm table is stepwise list --markdown", "
   CHECK(r.out == catalog_markdown());
   const std::string readme = testing::slurp(std::filesystem::path(SW_SOURCE_DIR) / "README.md");
   CHECK_THAT(readme, Catch::Contains(r.out));
+}
+
+TEST_CASE("catalog: check accepts every algorithm's own exact, reference and int traces and reads every mode's", "[catalog][check]") {
+  for (const Algorithm& alg : catalog()) {
+    for (Numeric n : alg.numerics) {
+      INFO(alg.id << " " << numeric_name(n));
+      std::stringstream trace;
+      try {
+        alg.validate(Json::parse(alg.example), n);
+      } catch (const InputError&) {
+        continue;  // the example is not this mode's input (fractions in int mode)
+      }
+      write_trace(alg, n, Json::parse(alg.example), trace);
+      const CheckReport rep = check_trace(trace, false);
+      INFO(rep.message);
+      if (n == Numeric::exact || n == Numeric::reference || n == Numeric::integer) CHECK(rep.status == 0);
+      else CHECK(rep.status != 2);  // rounded modes may diverge, but their traces are always readable
+    }
+  }
 }

@@ -1,6 +1,7 @@
 // The `stepwise` command as other tools drive it: trace, run, check, list, bench forms, and bad
 // input (one line naming the problem, exit 2, no output file).
 #include <catch2/catch.hpp>
+#include <cmath>
 #include "cli_harness.hpp"
 #include "input.hpp"
 
@@ -35,7 +36,7 @@ TEST_CASE("cli: trace writes header, steps and result", "[cli]") {
   const auto r = run_stepwise("trace dda-line --input '{\"p0\":[0,0],\"p1\":[4,2]}' --numeric exact --out " + sh_quote(out));
   REQUIRE(r.status == 0);
   const auto text = sw::testing::slurp(out);
-  CHECK(text.rfind("{\"format\":\"stepwise-trace\",\"version\":1,\"algorithm\":\"dda-line\",\"numeric\":\"exact\",\"input\":", 0) == 0);
+  CHECK(text.rfind("{\"format\":\"stepwise-trace\",\"version\":2,\"algorithm\":\"dda-line\",\"numeric\":\"exact\",\"input\":", 0) == 0);
   const auto lines = json_lines(text);
   REQUIRE(lines.size() > 3);
   CHECK(lines.back()["result"]["pixels"] == Json::parse("[[0,0],[1,1],[2,1],[3,2]]"));
@@ -76,17 +77,74 @@ TEST_CASE("cli: check names the first divergent step of a tampered trace", "[cli
   const auto c2 = run_stepwise("check " + sh_quote(bad));
   CHECK(c2.status == 1);
   CHECK(c2.err.find("result diverges") != std::string::npos);
+  CHECK(c2.err.find("result.cells") != std::string::npos);
 }
 
-TEST_CASE("cli: float traces diverge in numbers, agree in decisions on easy input", "[cli]") {
+TEST_CASE("cli: float and double traces pass check when decisions agree and numbers are within tolerance", "[cli]") {
   const auto dir = sw::testing::scratch("float");
   const auto t = (dir / "f.jsonl").string();
   REQUIRE(run_stepwise("trace dda-line --input '{\"p0\":[0,0],\"p1\":[9,3]}' --numeric float --out " + sh_quote(t)).status == 0);
-  CHECK(run_stepwise("check " + sh_quote(t)).status == 1);  // 1/3 is not a float
+  const auto ok = run_stepwise("check " + sh_quote(t));  // 1/3 is not a float, but within 2^-10
+  CHECK(ok.status == 0);
+  CHECK_THAT(ok.out, Catch::Contains("within"));
+  CHECK(run_stepwise("check --decisions-only " + sh_quote(t)).status == 0);
+  // A number far off (a wrong variable recorded) fails at its step, naming the variable.
+  auto lines = json_lines(sw::testing::slurp(t));
+  lines[5]["vars"]["qy"] = lines[5]["vars"]["qy"].get<double>() + 0.25;
+  std::ofstream(t, std::ios::trunc) << [&] { std::string s; for (auto& l : lines) s += l.dump() + "\n"; return s; }();
+  const auto bad = run_stepwise("check " + sh_quote(t));
+  CHECK(bad.status == 1);
+  CHECK_THAT(bad.err, Catch::Contains("step 4 diverges") && Catch::Contains("variable qy") && Catch::Contains("--decisions-only"));
   CHECK(run_stepwise("check --decisions-only " + sh_quote(t)).status == 0);
   // Filtered traces certify their decisions.
   REQUIRE(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0.5,0.5],\"p1\":[6.5,3.5]}' --numeric filtered --out " + sh_quote(t)).status == 0);
-  CHECK(run_stepwise("check --decisions-only " + sh_quote(t)).status == 0);
+  CHECK(run_stepwise("check " + sh_quote(t)).status == 0);
+}
+
+TEST_CASE("cli: a hand-written double DDA trace passes check and a wrong pixel fails at its step", "[cli]") {
+  // A student's DDA in double with another operation order: q at column k is computed afresh as
+  // p0 + (k - p0_x) dp, not by repeated addition. Same steps, same names; values differ by ulps.
+  const double p0x = 0.25, p0y = 1.0 / 3.0, p1x = 20.5, p1y = 9.0 / 7.0;
+  const double dx = p1x - p0x, dy = p1y - p0y, dpy = dy / dx;
+  std::vector<Json> steps;
+  auto step = [&](int line, const char* kind, Json vars, Json geo) {
+    steps.push_back({{"step", steps.size()}, {"line", line}, {"kind", kind}, {"vars", std::move(vars)}, {"geo", std::move(geo)}});
+  };
+  step(1, "init", {{"dx", dx}, {"dy", dy}}, Json::array({{{"segment", {p0x, p0y, p1x, p1y}}}}));
+  step(2, "decide", {{"a", 0}}, Json::array());
+  step(3, "decide", {{"swapped", 0}, {"dx", dx}, {"dy", dy}}, Json::array());
+  step(5, "init", {{"dpx", 1.0}, {"dpy", dpy}}, Json::array());
+  const double off = 1 - p0x;
+  Json pixels = Json::array();
+  auto qy_at = [&](int k) { return p0y + (k - p0x) * dpy; };
+  step(6, "init", {{"dp0x", off}, {"dp0y", off * dpy}, {"qx", 1.0}, {"qy", qy_at(1)}}, Json::array({{{"point", {1.0, qy_at(1)}}}}));
+  for (int k = 1; k < 21; ++k) {
+    const long j = static_cast<long>(std::floor(qy_at(k) + 0.5));
+    pixels.push_back({k, j});
+    step(8, "plot", {{"qx", double(k)}, {"qy", qy_at(k)}, {"i", k}, {"j", j}}, Json::array({{{"pixel", {k, j}}}, {{"point", {double(k), qy_at(k)}}}}));
+    step(9, "advance", {{"qx", double(k + 1)}, {"qy", qy_at(k + 1)}}, Json::array({{{"point", {double(k + 1), qy_at(k + 1)}}}}));
+  }
+  step(10, "done", {{"qx", 21.0}, {"qy", qy_at(21)}}, Json::array({{{"point", {21.0, qy_at(21)}}}}));
+  const Json header = {{"format", "stepwise-trace"}, {"version", 1}, {"algorithm", "dda-line"}, {"numeric", "double"},
+                       {"input", {{"p0", {p0x, p0y}}, {"p1", {p1x, p1y}}}}};
+  const auto dir = sw::testing::scratch("student");
+  const auto t = (dir / "student.jsonl").string();
+  auto write = [&] {
+    std::ofstream f(t, std::ios::trunc);
+    f << header.dump() << '\n';
+    for (const Json& s : steps) f << s.dump() << '\n';
+    f << Json{{"result", {{"pixels", pixels}}}}.dump() << '\n';
+  };
+  write();
+  const auto ok = run_stepwise("check " + sh_quote(t));
+  CHECK(ok.status == 0);
+  INFO(ok.err);
+  // One wrong pixel: exit 1 at that step, naming the geometry item.
+  steps[15]["geo"][0]["pixel"][1] = steps[15]["geo"][0]["pixel"][1].get<int>() + 1;
+  write();
+  const auto bad = run_stepwise("check " + sh_quote(t));
+  CHECK(bad.status == 1);
+  CHECK_THAT(bad.err, Catch::Contains("step 15 diverges") && Catch::Contains("geo[0].pixel"));
 }
 
 TEST_CASE("cli: run answers one line per input, equal to the trace results", "[cli]") {

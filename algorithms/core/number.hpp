@@ -10,7 +10,10 @@
 
 namespace sw {
 
-enum class Numeric : std::uint8_t { f32, f64, integer, filtered, exact };
+// reference: for algorithms with transcendental functions (no exact value): rationals, with each
+// sqrt, sin, cos, tan and atan2 evaluated in 300-bit MPFR and rounded; polynomial decisions stay
+// exact. The same number type as exact mode (Rational); only the functions differ in what they mean.
+enum class Numeric : std::uint8_t { f32, f64, integer, filtered, exact, reference };
 
 constexpr std::string_view numeric_name(Numeric n) {
   switch (n) {
@@ -19,12 +22,13 @@ constexpr std::string_view numeric_name(Numeric n) {
     case Numeric::integer: return "int";
     case Numeric::filtered: return "filtered";
     case Numeric::exact: return "exact";
+    case Numeric::reference: return "reference";
   }
   return "?";
 }
 
 inline std::optional<Numeric> parse_numeric(std::string_view s) {
-  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact})
+  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact, Numeric::reference})
     if (numeric_name(n) == s) return n;
   return std::nullopt;
 }

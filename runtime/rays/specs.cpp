@@ -304,9 +304,11 @@ constexpr auto sph_quad = []<class Num, class Probe>(const Prepared<Num>& p, Pro
 constexpr auto sph_stable = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_stable<Num>(p.ray, p.v[0], p.r, probe); };
 
 
-// ---- camera-ray and sphere-uv: float and double only (their values are transcendental). The
-// Rational instantiation evaluates sqrt and trig in 300-bit MPFR; it is the bench's and check's
-// reference (`oracle`), not an exact mode, and the catalog does not offer exact for them.
+// ---- camera-ray and sphere-uv: float, double and reference (their values are transcendental).
+// The Rational instantiation evaluates sqrt and trig in 300-bit MPFR: reference mode, the bench's
+// baseline and check's replay (`oracle`). Their decisions (fisheye's rho > 1) are exact there:
+// rho is an exact root when rho^2 is a rational square, and otherwise differs from 1 by far more
+// than 2^-300.
 
 struct CameraInput {
   Vec3<Rational> eye, vpn, vup;
@@ -388,7 +390,7 @@ struct CameraSpec {
   using Output = ValuesOutput;
   static constexpr std::string_view family = "rays";
   static constexpr std::array views{View::orbit3d};
-  static constexpr std::array numerics{Numeric::f32, Numeric::f64};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static inline const std::string example =
       R"({"camera":{"eye":[0,1,5],"vpn":[0,0,1],"vup":[0,1,0],"d":1,"fov":60},"pixel":[3,2],"size":[8,6],"projection":"perspective"})";
   static Input parse(const Json& j, Numeric) { return parse_camera(j); }
@@ -431,7 +433,7 @@ struct SphereUVSpec {
   using Output = ValuesOutput;
   static constexpr std::string_view family = "rays";
   static constexpr std::array views{View::orbit3d};
-  static constexpr std::array numerics{Numeric::f32, Numeric::f64};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static inline const std::string example = R"({"sphere":{"c":[0,0,0],"r":1},"point":[-0.6,0,0.8]})";
   static Input parse(const Json& j, Numeric) {
     only_keys(j, {"sphere", "point"}, "input");
