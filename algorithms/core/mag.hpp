@@ -14,6 +14,17 @@
 // The pair shares one SSE register, so a sum or a product is one packed instruction: the bound
 // costs nothing until a comparison reads it.
 //
+// Without SSE2 (or with SW_MAG_PORTABLE defined, to test it on x86; CMake option SW_MAG_PORTABLE)
+// the pair is two plain doubles and every packed instruction becomes the same operation on each
+// lane, in the same order, so that each lane rounds exactly as it does in the SSE2 register: the
+// same values, magnitudes, indices and flag. One caveat: a compiler allowed to contract across
+// statements (GCC's default -ffp-contract=fast on a target with FMA, such as AArch64) may fuse a
+// product into a following sum, in either lane. That changes the last bits but not the bound: a
+// fused a b + c rounds once where the proof (docs/rays/accuracy.md) allows two, so the value's
+// error stays within gamma_k of the magnitude and the magnitude still rounds only non-negative
+// sums and products (tests/test_mag.cpp passes that way too, built with -mfma -ffp-contract=fast).
+// Build with -ffp-contract=off for values identical to the SSE2 path.
+//
 // Preconditions the type enforces itself: an input outside {0} U [2^-100, 2^100] gets m = NaN (no
 // decision that depends on it is ever certain), which with the ray family's low degrees keeps
 // every product's magnitude far above the subnormal range (the tests check it, via Checked). An
@@ -27,20 +38,41 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
-#include <emmintrin.h>  // the square root's packed sqrtpd and maxpd; SSE2 is baseline on x86-64
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#if !defined(__SSE2__)
-#error "Mag needs SSE2 (x86-64)"
+#if defined(__SSE2__) && !defined(SW_MAG_PORTABLE)
+#define SW_MAG_SSE2 1
+#include <emmintrin.h>  // the square root's packed sqrtpd and maxpd; SSE2 is baseline on x86-64
+#else
+#define SW_MAG_SSE2 0  // the portable fallback: two doubles
+#include <bit>
 #endif
 
 namespace sw {
 
 namespace mag_detail {
+#if SW_MAG_SSE2
 typedef double Pair __attribute__((vector_size(16)));  // [0] value, [1] magnitude
 typedef std::int64_t PairBits __attribute__((vector_size(16)));
+#else
+// The two lanes as two doubles, read like the vector ([0] value, [1] magnitude); each operator is
+// the packed instruction's lane-by-lane operation.
+struct Pair {
+  double v, m;
+  [[gnu::always_inline]] double operator[](int i) const { return i ? m : v; }
+};
+[[gnu::always_inline]] inline Pair operator+(Pair a, Pair b) { return {a.v + b.v, a.m + b.m}; }
+[[gnu::always_inline]] inline Pair operator*(Pair a, Pair b) { return {a.v * b.v, a.m * b.m}; }
+[[gnu::always_inline]] inline Pair operator/(Pair a, Pair b) { return {a.v / b.v, a.m / b.m}; }
+// maxpd(0, x): x when x is NaN or a zero of either sign (maxpd returns its second operand then).
+[[gnu::always_inline]] inline double max0(double x) { return 0.0 > x ? 0.0 : x; }
+// c ? a : b as a bitwise blend, like the SSE2 path's (no branch on data).
+[[gnu::always_inline]] inline double blend(std::uint64_t mask, double a, double b) {
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+#endif
 struct NoIndex {};
 struct Index {
   int k = 0;
@@ -108,17 +140,26 @@ template <bool Checked> class BasicMag {
   [[gnu::always_inline]] friend BasicMag sqrt(const BasicMag& x) {
     if constexpr (Checked)
       if (x.index() > kIndexBudget) throw std::logic_error("Mag: a square root's radicand of index " + std::to_string(x.index()) + " exceeds the budget");
+#if SW_MAG_SSE2
     const Pair r = reinterpret_cast<Pair>(_mm_sqrt_pd(_mm_max_pd(__m128d{0, 0}, reinterpret_cast<__m128d>(x.p_ * Pair{1, kC * 0x1p106}))));
+#else
+    const Pair r{std::sqrt(mag_detail::max0(x.p_.v)), std::sqrt(mag_detail::max0(x.p_.m * (kC * 0x1p106)))};
+#endif
     return product(r + Pair{0, r[0]}, 3);
   }
 
   // c ? a : b without a branch (a bitwise blend of both lanes), for selections that depend on the
   // data: a mispredicted branch costs more than the whole filter.
   [[gnu::always_inline]] static BasicMag blend(bool c, const BasicMag& a, const BasicMag& b) {
+#if SW_MAG_SSE2
     using Bits = mag_detail::PairBits;
     const std::int64_t bit = -std::int64_t(c);
     const Bits mask{bit, bit};
     return make(reinterpret_cast<Pair>((reinterpret_cast<Bits>(a.p_) & mask) | (reinterpret_cast<Bits>(b.p_) & ~mask)), c ? a.index() : b.index());
+#else
+    const std::uint64_t mask = -std::uint64_t(c);
+    return make(Pair{mag_detail::blend(mask, a.p_.v, b.p_.v), mag_detail::blend(mask, a.p_.m, b.p_.m)}, c ? a.index() : b.index());
+#endif
   }
 
   // Each comparison decides the exact sign of a - b or raises the flag; the result is the double
@@ -146,7 +187,11 @@ template <bool Checked> class BasicMag {
     return a == 0 ? -0.0 : (a >= kMinInput) & (a <= kMaxInput) ? a : std::numeric_limits<double>::quiet_NaN();
   }
   [[gnu::always_inline]] static Pair flip_value(Pair p) {
+#if SW_MAG_SSE2
     return reinterpret_cast<Pair>(reinterpret_cast<mag_detail::PairBits>(p) ^ mag_detail::PairBits{INT64_MIN, 0});
+#else
+    return {-p.v, p.m};  // negation flips the sign bit only, as the xor does
+#endif
   }
   [[gnu::always_inline]] static int sum_index(const BasicMag& a, const BasicMag& b) { return (a.index() > b.index() ? a.index() : b.index()) + 1; }
   [[gnu::always_inline]] static BasicMag make(Pair p, int k) {
