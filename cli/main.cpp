@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
   list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
   list->add_option("--listing", list_listing, "Print one algorithm's listing: line id, name and text");
 
+  auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
+
   std::string alg_id, input_arg, numeric = "double", out_path, inputs_path, trace_path;
   bool decisions_only = false, json = false;
   int repeats = 3;
@@ -107,6 +109,10 @@ int main(int argc, char** argv) {
 #ifdef SW_HAVE_RENDER
     if (*render) return sw::vis::run_render(render_opts);
 #endif
+    if (*schema) {
+      std::cout << trace_schema();
+      return 0;
+    }
     if (*list) {
       if (list_markdown) {
         std::cout << catalog_markdown();

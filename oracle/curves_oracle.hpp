@@ -6,6 +6,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 #include "core/number.hpp"
 #include "core/vec.hpp"
@@ -33,5 +34,22 @@ std::vector<Pixel> circle_interior_pixels(std::int64_t cx, std::int64_t cy, std:
 // with X (resp. I) found by a linear scan over k. Quadratic in r: small radii only (tests).
 std::vector<Pixel> circle_midpoint_brute_force(std::int64_t cx, std::int64_t cy, std::int64_t r);
 std::vector<Pixel> circle_interior_brute_force(std::int64_t cx, std::int64_t cy, std::int64_t r);
+
+// The implicit-curve walk on P(x, y) = sum c[i][j] x^i y^j (c[i][j] = 0 for i + j > 3), stated
+// move by move with P and its partial derivatives evaluated exactly at each point (no difference
+// table, nothing carried but the path). From the pixel p, with g = grad P(p):
+//  - k = max_steps moves made: stop ("max_steps"); g = 0: stop ("singular");
+//  - t = (-g_y, g_x); the major axis a is the one with the larger |t_a|, on a tie x iff
+//    t_x t_y < 0; b the other; s_a = sign t_a; s_b = sign t_b, or -sign g_b when t_b = 0;
+//  - A = p + s_a e_a, D = A + s_b e_b; the walk moves to D iff sign P((A + D) / 2) * s_b *
+//    sign g_b < 0, else to A; the move counts;
+//  - the new pixel is the start: stop ("closed"); already on the path: stop ("revisit").
+// Returns the path (start first, each pixel once); `end`, if given, gets the reason and the moves.
+struct ImplicitWalkEnd {
+  std::string stopped;
+  std::int64_t steps = 0;
+};
+std::vector<Pixel> implicit_walk_pixels(const std::array<std::array<Rational, 4>, 4>& c, Pixel start, std::int64_t max_steps,
+                                        ImplicitWalkEnd* end = nullptr);
 
 }  // namespace sw::oracle

@@ -25,6 +25,10 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// The JSON schema of a trace line (docs/trace.schema.json is this, written by `stepwise schema`),
+// derived from the step kinds, the geometry table and the numeric modes.
+std::string trace_schema();
+
 // The first line of a trace.
 std::string trace_header(const Algorithm& alg, Numeric n, const Json& input);
 

@@ -119,3 +119,18 @@ TEST_CASE("catalog: check accepts every algorithm's own exact, reference and int
     }
   }
 }
+
+TEST_CASE("catalog: docs/trace.schema.json is the schema derived from the vocabulary", "[catalog][cli]") {
+  const auto r = testing::run_stepwise("schema");
+  REQUIRE(r.status == 0);
+  CHECK(r.out == trace_schema());
+  CHECK(testing::slurp(std::filesystem::path(SW_SOURCE_DIR) / "docs" / "trace.schema.json") == r.out);
+  // Every geometry kind is in it, with its arity.
+  const Json schema = Json::parse(r.out);
+  const Json& props = schema["$defs"]["step"]["properties"]["geo"]["items"]["properties"];
+  for (const GeoDesc& g : kGeoDescs) {
+    INFO(g.name);
+    REQUIRE(props.contains(std::string(g.name)));
+    if (g.arity) CHECK(props[std::string(g.name)]["maxItems"] == g.arity);
+  }
+}

@@ -1,6 +1,7 @@
 // The `stepwise` command as other tools drive it: trace, run, check, list, bench forms, and bad
 // input (one line naming the problem, exit 2, no output file).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include "cli_harness.hpp"
 #include "input.hpp"
@@ -229,4 +230,24 @@ TEST_CASE("cli: bad input is one line, exit 2, and no output file", "[cli][error
   CHECK(trunc.status == 2);
   CHECK(trunc.err.find("no result line") != std::string::npos);
   CHECK(run_stepwise("check /nonexistent.jsonl").status == 2);
+}
+
+TEST_CASE("cli: check refuses a trace nested 10^5 levels deep with exit 2 and one line", "[cli]") {
+  const auto dir = sw::testing::scratch("deep");
+  const auto t = (dir / "deep.jsonl").string();
+  REQUIRE(run_stepwise("trace dda-line --input '{\"p0\":[0,0],\"p1\":[3,1]}' --numeric exact --out " + sh_quote(t)).status == 0);
+  auto text = sw::testing::slurp(t);
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  // Replace the first step's vars with a deeply nested value, and separately the result.
+  for (const std::string& where : {std::string("\"vars\":{"), std::string("{\"result\":")}) {
+    std::string bad = text;
+    const auto at = where[1] == 'v' ? bad.find(where) : bad.rfind(where);
+    REQUIRE(at != std::string::npos);
+    bad.insert(at + where.size(), where[1] == 'v' ? "\"x\":" + deep + "," : "{\"deep\":" + deep + "},\"r\":");
+    std::ofstream(t, std::ios::trunc) << bad;
+    const auto r = run_stepwise("check " + sh_quote(t));
+    CHECK(r.status == 2);
+    CHECK_THAT(r.err, Catch::Contains("nested more than 64"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
 }

@@ -14,16 +14,16 @@
 // The pair shares one SSE register, so a sum or a product is one packed instruction: the bound
 // costs nothing until a comparison reads it.
 //
-// Without SSE2 (or with SW_MAG_PORTABLE defined, to test it on x86; CMake option SW_MAG_PORTABLE)
-// the pair is two plain doubles and every packed instruction becomes the same operation on each
-// lane, in the same order, so that each lane rounds exactly as it does in the SSE2 register: the
-// same values, magnitudes, indices and flag. One caveat: a compiler allowed to contract across
-// statements (GCC's default -ffp-contract=fast on a target with FMA, such as AArch64) may fuse a
-// product into a following sum, in either lane. That changes the last bits but not the bound: a
-// fused a b + c rounds once where the proof (docs/rays/accuracy.md) allows two, so the value's
-// error stays within gamma_k of the magnitude and the magnitude still rounds only non-negative
-// sums and products (tests/test_mag.cpp passes that way too, built with -mfma -ffp-contract=fast).
-// Build with -ffp-contract=off for values identical to the SSE2 path.
+// Without SSE2, or with SW_MAG_PORTABLE defined (CMake option SW_MAG_PORTABLE, to test it on
+// x86), the pair is two plain doubles and each packed instruction becomes the same operation on
+// each lane, so that each lane rounds exactly as in the SSE2 register: the same values, magnitudes,
+// indices and flag (only a NaN's sign may differ, and a NaN is never certain). One caveat, shared
+// with the SSE2 path built with -mfma: a compiler that contracts across statements (GCC's default
+// -ffp-contract=fast where FMA exists, as on AArch64) may fuse a product into a following sum in
+// either lane. That changes last bits, not the bound: a fused a b + c rounds once where the proof
+// (docs/rays/accuracy.md) allows two, so the value's error stays within gamma_k of the magnitude
+// and the magnitude still rounds only sums and products of non-negative numbers (test_mag passes
+// built that way). -ffp-contract=off gives the SSE2 path's values bit for bit.
 //
 // Preconditions the type enforces itself: an input outside {0} U [2^-100, 2^100] gets m = NaN (no
 // decision that depends on it is ever certain), which with the ray family's low degrees keeps
@@ -184,7 +184,7 @@ template <bool Checked> class BasicMag {
   // like 0 everywhere.
   [[gnu::always_inline]] static double input_magnitude(double x) {
     const double a = std::fabs(x);
-    return a == 0 ? -0.0 : (a >= kMinInput) & (a <= kMaxInput) ? a : std::numeric_limits<double>::quiet_NaN();
+    return a == 0 ? -0.0 : ((a >= kMinInput) & (a <= kMaxInput)) ? a : std::numeric_limits<double>::quiet_NaN();
   }
   [[gnu::always_inline]] static Pair flip_value(Pair p) {
 #if SW_MAG_SSE2

@@ -1,10 +1,12 @@
 // The curves family's catalog entries: poly-forward-diff, poly-horner, circle-interior,
-// circle-midpoint. Semantics and bounds: docs/curves/semantics.md.
+// circle-midpoint, implicit-curve. Semantics and bounds: docs/curves/semantics.md and (the
+// implicit walk) docs/curves/implicit.md.
 #include <algorithm>
 #include <random>
 #include "adapter.hpp"
 #include "curves/circle_interior.hpp"
 #include "curves/circle_midpoint.hpp"
+#include "curves/implicit_curve.hpp"
 #include "curves/poly_horner.hpp"
 #include "curves_oracle.hpp"
 #include "pixels.hpp"
@@ -148,6 +150,142 @@ template <class AlgoT> struct CircleSpec {
   }
 };
 
+
+// --- implicit-curve ---
+
+// Bounds: |start| <= 2^20, 1 <= max_steps <= 2^20, terms [coef, i, j] with i + j <= 3, each (i, j)
+// once, coefficients of at most 64-bit numerator and denominator, and |P| <= 2^100 wherever the
+// walk can go (so float neither overflows nor writes inf into a trace).
+constexpr std::int64_t kMaxStart = std::int64_t{1} << 20, kMaxWalk = std::int64_t{1} << 20;
+
+struct ImplicitInput {
+  std::array<std::array<Rational, 4>, 4> c;  // c[i][j]: the coefficient of x^i y^j
+  Pixel start;
+  std::int64_t max_steps = 1;
+  int degree = 1;
+};
+
+ImplicitInput parse_implicit(const Json& j) {
+  only_keys(j, {"P", "start", "max_steps"}, "input");
+  ImplicitInput in;
+  const Json& P = j["P"];
+  if (!P.is_array() || P.empty()) throw InputError("input.P: expected a non-empty list of terms [coef, i, j] (P = sum coef x^i y^j)");
+  std::array<std::array<int, 4>, 4> seen{};  // 1 + the index of the term that set (i, j)
+  int degree = 0;
+  for (std::size_t k = 0; k < P.size(); ++k) {
+    const std::string what = "input.P[" + std::to_string(k) + "]";
+    const Json& t = P[k];
+    if (!t.is_array() || t.size() != 3) throw InputError(what + ": expected a term [coef, i, j]");
+    const Rational coef = parse_rational(t[0], what + "[0]");
+    if (mpz_sizeinbase(coef.get_num_mpz_t(), 2) > 64 || mpz_sizeinbase(coef.get_den_mpz_t(), 2) > 64)
+      throw InputError(what + "[0]: numerator or denominator beyond 64 bits");
+    const auto i = parse_integer(t[1], what + "[1]", 0, 3), e = parse_integer(t[2], what + "[2]", 0, 3);
+    if (i + e > 3) throw InputError(what + ": x^" + std::to_string(i) + " y^" + std::to_string(e) + " has degree " + std::to_string(i + e) + ", beyond 3");
+    if (seen[i][e]) throw InputError(what + ": duplicate term x^" + std::to_string(i) + " y^" + std::to_string(e) + " (also input.P[" + std::to_string(seen[i][e] - 1) + "])");
+    seen[i][e] = static_cast<int>(k) + 1;
+    in.c[i][e] = coef;
+    if (coef != 0) degree = std::max(degree, static_cast<int>(i + e));
+  }
+  if (degree == 0) throw InputError("input.P: no term of degree >= 1 with a nonzero coefficient (P is constant)");
+  in.degree = degree;
+  const Json& s = j["start"];
+  if (!s.is_array() || s.size() != 2) throw InputError("input.start: expected the start pixel [x, y] (integers)");
+  in.start = {parse_integer(s[0], "input.start[0]", -kMaxStart, kMaxStart), parse_integer(s[1], "input.start[1]", -kMaxStart, kMaxStart)};
+  in.max_steps = parse_integer(j["max_steps"], "input.max_steps", 1, kMaxWalk);
+  // |P| <= sum |c_ij| X^(i + j) for |x|, |y| <= X; the walk stays within max_steps + 1 of the start.
+  const Rational X(std::max(std::abs(in.start.x), std::abs(in.start.y)) + in.max_steps + 2);
+  Rational bound = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; a + b < 4; ++b) {
+      Rational term = abs(in.c[a][b]);
+      for (int k = 0; k < a + b; ++k) term *= X;
+      bound += term;
+    }
+  if (bound > Rational(std::ldexp(1.0, 100)))
+    throw InputError("input: |P| may reach " + num::to_text(bound.get_d()) + " within max_steps of the start, beyond the bound 2^100");
+  return in;
+}
+
+struct ImplicitOutput {
+  std::vector<Pixel> pixels;
+  curves::WalkStop stopped = curves::WalkStop::max_steps;
+  std::int64_t steps = 0;
+  friend bool operator==(const ImplicitOutput&, const ImplicitOutput&) = default;
+};
+
+// No int mode: coefficients may be fractions, and P at the half-integer midpoints is not an integer.
+struct ImplicitSpec {
+  using Algo = curves::ImplicitCurve;
+  using Input = ImplicitInput;
+  using Output = ImplicitOutput;
+  static constexpr std::string_view family = "curves";
+  static constexpr std::array views{View::plane2d};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+  static inline const std::string example = R"({"P":[["1/4",2,0],[1,0,2],[-36,0,0]],"start":[-12,0],"max_steps":200})";
+  static Input parse(const Json& j, Numeric) { return parse_implicit(j); }
+  template <class Num> static curves::ImplicitPoly<Num> prepare(const Input& in) {
+    curves::ImplicitPoly<Num> p;
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; i + k < 4; ++k) p.c[i][k] = num::from_rational<Num>(in.c[i][k]);
+    p.start = in.start, p.max_steps = in.max_steps, p.degree = in.degree;
+    return p;
+  }
+  template <class Num, class Probe> static Output compute(const curves::ImplicitPoly<Num>& p, Probe& probe) {
+    Output o;
+    const curves::WalkEnd end = curves::implicit_curve<Num>(p, o.pixels, probe);
+    o.stopped = end.stopped, o.steps = end.steps;
+    return o;
+  }
+  static Json to_json(const Output& o) {
+    Json r = pixels_json("pixels", {o.pixels, true});
+    r["closed"] = o.stopped == curves::WalkStop::closed;
+    r["steps"] = o.steps;
+    r["stopped"] = std::string(curves::kWalkStopNames[static_cast<std::size_t>(o.stopped)]);
+    return r;
+  }
+  static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  // Six steps per move (grad, axes, probe, decide, move, plot) and a few around them.
+  static std::size_t estimate_steps(const Input& in) { return 6 * static_cast<std::size_t>(in.max_steps) + 8; }
+  static Output oracle(const Input& in) {
+    oracle::ImplicitWalkEnd end;
+    Output o{oracle::implicit_walk_pixels(in.c, in.start, in.max_steps, &end), curves::WalkStop::max_steps, end.steps};
+    for (std::size_t k = 0; k < curves::kWalkStopNames.size(); ++k)
+      if (curves::kWalkStopNames[k] == end.stopped) o.stopped = static_cast<curves::WalkStop>(k);
+    return o;
+  }
+  static std::vector<BenchSet<Input>> bench_sets() {
+    std::mt19937_64 rng(20261125);
+    const auto u = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
+    auto input = [](std::initializer_list<std::array<Rational, 3>> terms, Pixel start, std::int64_t max_steps) {
+      Input in;
+      for (const auto& t : terms) {
+        const int i = static_cast<int>(t[1].get_num().get_si()), k = static_cast<int>(t[2].get_num().get_si());
+        in.c[i][k] = t[0];
+        if (t[0] != 0) in.degree = std::max(in.degree, i + k);
+      }
+      in.start = start, in.max_steps = max_steps;
+      return in;
+    };
+    BenchSet<Input> random{"random", {}}, hard{"hard", {}};
+    // a x^2 + b y^2 = r^2 with a, b in {1/4, 1/2, ..., 4} (dyadic), started on the curve's left.
+    for (int i = 0; i < 500; ++i) {
+      const Rational a(1 << u(0, 4), 4), b(1 << u(0, 4), 4);
+      const std::int64_t r = u(1, 200);
+      const std::int64_t x0 = -std::llround(static_cast<double>(r) / std::sqrt(a.get_d()));
+      random.inputs.push_back(input({{a, 2, 0}, {b, 0, 2}, {Rational(-r * r), 0, 0}}, {x0, 0}, 8192));
+    }
+    // The corpus kinds: a line, a hyperbola along its asymptote, a nodal cubic, a cusp, a far start.
+    for (int i = 0; i < 8; ++i) {
+      hard.inputs.push_back(input({{3, 1, 0}, {-7, 0, 1}, {Rational(u(-9, 9), 2), 0, 0}}, {0, 0}, 4096));
+      hard.inputs.push_back(input({{1, 1, 1}, {-30, 0, 0}}, {1, 30}, 4096));
+      hard.inputs.push_back(input({{1, 0, 2}, {-1, 3, 0}, {-8, 2, 0}}, {-3 - i, 4}, 4096));
+      hard.inputs.push_back(input({{1, 0, 2}, {-1, 3, 0}}, {9 + i, 27}, 4096));
+      hard.inputs.push_back(input({{1, 2, 0}, {1, 0, 2}, {-100, 0, 0}}, {40 + i, 3}, 4096));
+    }
+    return {random, hard};
+  }
+};
+
 }  // namespace
 
 void register_curves(std::vector<Algorithm>& out) {
@@ -155,6 +293,7 @@ void register_curves(std::vector<Algorithm>& out) {
   out.push_back(make_algorithm<CubicSpec<curves::PolyHorner>>());
   out.push_back(make_algorithm<CircleSpec<curves::CircleInterior>>());
   out.push_back(make_algorithm<CircleSpec<curves::CircleMidpoint>>());
+  out.push_back(make_algorithm<ImplicitSpec>());
 }
 
 }  // namespace sw
