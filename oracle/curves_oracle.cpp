@@ -143,19 +143,17 @@ std::vector<Pixel> circle_interior_brute_force(std::int64_t cx, std::int64_t cy,
 
 std::vector<Pixel> implicit_walk_pixels(const std::array<std::array<Rational, 4>, 4>& c, Pixel start, std::int64_t max_steps,
                                         ImplicitWalkEnd* end) {
-  // sum c_ij * (d/dx)^dx (d/dy)^dy (x^i y^j) at (x, y), each power from scratch.
-  auto eval = [&](const Q& x, const Q& y, int dx, int dy) {
-    auto power = [](const Q& base, int e) {
-      Q r(1);
-      for (int k = 0; k < e; ++k) r = r * base;
-      return r;
-    };
-    Q s(0);
+  // sum c_ij * (d/dx)^dx (d/dy)^dy (x^i y^j) at (x, y), term by term from the powers of x and y.
+  auto eval = [&](const Rational& x, const Rational& y, int dx, int dy) {
+    const std::array<Rational, 4> xp{Rational(1), x, Rational(x * x), Rational(x * x * x)},
+        yp{Rational(1), y, Rational(y * y), Rational(y * y * y)};
+    Rational s = 0;
     for (int i = dx; i < 4; ++i)
-      for (int j = dy; i + j < 4; ++j) s = s + q(c[i][j]) * Q(dx ? i : 1) * Q(dy ? j : 1) * power(x, i - dx) * power(y, j - dy);
+      for (int j = dy; i + j < 4; ++j)
+        if (c[i][j] != 0) s += c[i][j] * (dx ? i : 1) * (dy ? j : 1) * xp[i - dx] * yp[j - dy];
     return s;
   };
-  auto sign = [](const Q& v) { return (Q(0) < v) - (v < Q(0)); };
+  auto sign = [](const Rational& v) { return sgn(v); };
   std::vector<Pixel> path{start};
   std::set<Pixel> on_path{start};
   Pixel p = start;
@@ -166,19 +164,19 @@ std::vector<Pixel> implicit_walk_pixels(const std::array<std::array<Rational, 4>
       why = "max_steps";
       break;
     }
-    const Q gx = eval(Q(p.x), Q(p.y), 1, 0), gy = eval(Q(p.x), Q(p.y), 0, 1);
+    const Rational px(p.x), py(p.y), gx = eval(px, py, 1, 0), gy = eval(px, py, 0, 1);
     if (sign(gx) == 0 && sign(gy) == 0) {
       why = "singular";
       break;
     }
-    const Q tx = -gy, ty = gx;
-    const int cmp = sign(Q(tx * tx - ty * ty));  // |t_x| vs |t_y|
+    const Rational tx = -gy, ty = gx;
+    const int cmp = sign(Rational(tx * tx - ty * ty));  // |t_x| vs |t_y|
     const bool x_major = cmp > 0 || (cmp == 0 && sign(tx) * sign(ty) < 0);
     const int sa = sign(x_major ? tx : ty), gb = sign(x_major ? gy : gx);
     const int sb = sign(x_major ? ty : tx) != 0 ? sign(x_major ? ty : tx) : -gb;
     const Pixel A = x_major ? Pixel{p.x + sa, p.y} : Pixel{p.x, p.y + sa};
     const Pixel D = x_major ? Pixel{A.x, A.y + sb} : Pixel{A.x + sb, A.y};
-    const Q mx = Q(A.x + D.x) / Q(2), my = Q(A.y + D.y) / Q(2);
+    const Rational mx = Rational(A.x + D.x) / 2, my = Rational(A.y + D.y) / 2;
     const Pixel next = sign(eval(mx, my, 0, 0)) * sb * gb < 0 ? D : A;
     ++moves;
     if (next == start) why = "closed";

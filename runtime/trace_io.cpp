@@ -243,9 +243,14 @@ struct Diverged {
 
 // What differs between the replay's step and the trace's, or nothing. Names the field.
 std::optional<std::string> step_diff(const Json& want, const Json& got, const Tolerance& tol, const Listing& listing) {
+  // Steps inside a nested call name the callee ("in") and count lines in its listing.
+  const std::string want_in = want.value("in", ""), got_in = got.contains("in") && got["in"].is_string() ? got["in"].get<std::string>() : "";
+  if (want_in != got_in)
+    return "listing: expected a step of " + (want_in.empty() ? std::string("the algorithm itself") : want_in) + ", got one of " + (got_in.empty() ? std::string("the algorithm itself") : got_in);
+  const Listing& lst = want_in.empty() ? listing : find_algorithm(want_in).listing;
   auto line_name = [&](const Json& l) {
     const auto id = l.get<std::int64_t>();
-    return l.dump() + (id >= 1 && id <= static_cast<std::int64_t>(listing.lines.size()) ? " (" + std::string(listing.lines[id - 1].name) + ")" : "");
+    return l.dump() + (id >= 1 && id <= static_cast<std::int64_t>(lst.lines.size()) ? " (" + std::string(lst.lines[id - 1].name) + ")" : "");
   };
   if (got.at("line") != want.at("line")) return "line: expected " + line_name(want.at("line")) + ", got " + line_name(got.at("line"));
   if (got.at("kind") != want.at("kind")) return "kind: expected " + want.at("kind").dump() + ", got " + got.at("kind").dump();

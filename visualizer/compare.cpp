@@ -6,7 +6,7 @@ namespace {
 
 bool same_decisions(const TraceView& a, const TraceView& b, std::size_t s) {
   const StepRecord &x = a.at(s), &y = b.at(s);
-  if (x.line != y.line || x.kind != y.kind) return false;
+  if (x.line != y.line || x.kind != y.kind || x.scope != y.scope) return false;
   if (x.var_end - x.var_begin != y.var_end - y.var_begin || x.geo_end - x.geo_begin != y.geo_end - y.geo_begin) return false;
   for (std::uint32_t k = 0; k < x.var_end - x.var_begin; ++k) {
     const VarRecord &u = a.var_at(x.var_begin + k), &v = b.var_at(y.var_begin + k);

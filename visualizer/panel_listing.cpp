@@ -5,19 +5,27 @@ namespace sw::vis {
 
 void App::draw_listing(ImVec2 pos, ImVec2 size) {
   place_next(pos, size);
-  const std::string title = alg_ ? std::string(alg_->listing.title) + "###Listing" : std::string("Listing###Listing");
+  // A step inside a nested call shows the callee's listing (its steps' lines are in it).
+  const StepRecord* st = alg_ && a_ ? &a_->trace().at(step_) : nullptr;
+  const Listing* listing = alg_ ? &alg_->listing : nullptr;
+  std::string title = alg_ ? std::string(alg_->listing.title) : std::string("Listing");
+  if (st && st->scope) {
+    listing = &a_->trace().scope_listing(st->scope);
+    title = std::string(listing->title) + "  (called by " + std::string(alg_->listing.title) + ")";
+  }
+  title += "###Listing";
   ImGui::Begin(title.c_str(), nullptr, kPanelFlags);
   highlighted_line_ = 0;
   if (!alg_ || !a_) {
     ImGui::End();
     return;
   }
-  const std::uint32_t line = a_->trace().at(step_).line;
+  const std::uint32_t line = st->line;
   highlighted_line_ = line;
   ImGui::PushFont(fonts_.mono);
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 3));
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const auto& lines = alg_->listing.lines;
+  const auto& lines = listing->lines;
   const float number_w = ImGui::CalcTextSize("00 ").x;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const bool current = i + 1 == line;

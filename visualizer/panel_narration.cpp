@@ -57,7 +57,7 @@ void App::draw_narration(ImVec2 pos, ImVec2 size) {
     const Narration* n = nullptr;
     if (a_) {
       const StepRecord& st = a_->trace().at(step_);
-      n = lesson_->narration_for(st.line, st.kind);
+      n = lesson_->narration_for(st.scope ? 0 : st.line, st.kind);  // line names are the algorithm's own
     }
     if (n) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.93f, 0.75f, 1));

@@ -5,6 +5,8 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 #include "core/number.hpp"
 #include "core/step.hpp"
 #include "core/vec.hpp"
@@ -32,6 +34,10 @@ template <class Num> class JsonlProbe {
     open_ = true;
     line_ = "{\"step\":" + std::to_string(count_++) + ",\"line\":" + std::to_string(line) + ",\"kind\":\"";
     line_ += kind_name(kind);
+    if (!scopes_.empty()) {  // a nested listing: "in" names the callee whose listing `line` is in
+      line_ += "\",\"in\":\"";
+      line_ += scopes_.back();
+    }
     line_ += "\",\"vars\":{";
     geo_.clear();
     first_var_ = true;
@@ -69,6 +75,9 @@ template <class Num> class JsonlProbe {
   JsonlProbe& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
   JsonlProbe& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
 
+  void enter(std::string_view id, const Listing&) { scopes_.push_back(id); }
+  void leave() { scopes_.pop_back(); }
+
   void finish() {
     if (!open_) return;
     line_ += "},\"geo\":[";
@@ -97,6 +106,7 @@ template <class Num> class JsonlProbe {
   }
 
   std::ostream& out_;
+  std::vector<std::string_view> scopes_;
   std::string line_, geo_;
   std::uint64_t count_ = 0;
   bool open_ = false, first_var_ = true;

@@ -20,8 +20,9 @@ struct NoProbe {
 
 // Steps as stored: ranges into the shared variable and geometry arrays.
 struct StepRecord {
-  std::uint32_t line;
+  std::uint32_t line;   // in the listing of `scope`
   StepKind kind;
+  std::uint8_t scope;   // 0: the algorithm's own listing; k: the callee scope_listing(k)
   std::uint32_t var_begin, var_end, geo_begin, geo_end;
 };
 struct VarRecord {
@@ -45,6 +46,11 @@ class TraceView {
   virtual std::string num_text(std::uint32_t slot) const = 0;  // lossless
 
   std::size_t size() const { return steps_.size(); }
+  // The callee listings entered during the run (nested scopes), by scope number from 1; the
+  // algorithm's own listing is scope 0 and not stored here.
+  std::size_t scope_count() const { return scopes_.size(); }
+  const Listing& scope_listing(std::uint8_t k) const { return scopes_[k - 1].listing; }
+  std::string_view scope_id(std::uint8_t k) const { return scopes_[k - 1].id; }
   const StepRecord& at(std::size_t i) const { return steps_[i]; }
   const VarRecord& var_at(std::uint32_t v) const { return vars_[v]; }
   const GeoRecord& geo_at(std::uint32_t g) const { return geos_[g]; }
@@ -68,6 +74,11 @@ class TraceView {
   std::vector<VarRecord> vars_;
   std::vector<GeoRecord> geos_;
   std::vector<std::int64_t> ints_;
+  struct Scope {
+    std::string_view id;
+    Listing listing;
+  };
+  std::vector<Scope> scopes_;
 };
 
 template <class Num> class Recorder final : public TraceView {
@@ -80,17 +91,37 @@ template <class Num> class Recorder final : public TraceView {
   const Num& num_value(std::uint32_t s) const { return nums_[s]; }
 
   Recorder& step(std::uint32_t line, StepKind kind) {
+    muted_ = depth_ > max_depth_;
+    if (muted_) return *this;
     auto nv = static_cast<std::uint32_t>(vars_.size()), ng = static_cast<std::uint32_t>(geos_.size());
-    steps_.push_back({line, kind, nv, nv, ng, ng});
+    steps_.push_back({line, kind, stack_.empty() ? std::uint8_t{0} : stack_.back(), nv, nv, ng, ng});
     return *this;
   }
+  // Nested listings: the steps between enter and leave are the callee's, on its listing. Calls
+  // nest; a callee deeper than max_depth is summarised (its steps are not recorded; the caller's
+  // own step shows its outcome).
+  void enter(std::string_view id, const Listing& listing) {
+    ++depth_;
+    if (depth_ > max_depth_) return;
+    std::size_t k = 0;
+    while (k < scopes_.size() && scopes_[k].id != id) ++k;
+    if (k == scopes_.size()) scopes_.push_back({id, listing});
+    stack_.push_back(static_cast<std::uint8_t>(k + 1));
+  }
+  void leave() {
+    if (depth_-- > max_depth_) return;
+    stack_.pop_back();
+  }
+  void set_max_depth(int d) { max_depth_ = d; }
   Recorder& num(const char* name, const Num& v) {
+    if (muted_) return *this;
     vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false});
     nums_.push_back(v);
     steps_.back().var_end++;
     return *this;
   }
   Recorder& idx(const char* name, std::int64_t v) {
+    if (muted_) return *this;
     vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true});
     ints_.push_back(v);
     steps_.back().var_end++;
@@ -102,6 +133,7 @@ template <class Num> class Recorder final : public TraceView {
   // Any number-valued geometry: the values in the order SW_GEO_KINDS documents.
   template <class... V> Recorder& geo(GeoKind kind, const V&... values) {
     static_assert(sizeof...(V) > 0);
+    if (muted_) return *this;
     geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size()), sizeof...(V)});
     (nums_.push_back(values), ...);
     steps_.back().geo_end++;
@@ -109,6 +141,7 @@ template <class Num> class Recorder final : public TraceView {
   }
   // A variable-length kind (polyline, polygon): the points' coordinates in order.
   Recorder& geo_list(GeoKind kind, std::span<const Vec2<Num>> points) {
+    if (muted_) return *this;
     geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size()), static_cast<std::uint32_t>(2 * points.size())});
     for (const auto& p : points) nums_.push_back(p.x), nums_.push_back(p.y);
     steps_.back().geo_end++;
@@ -119,6 +152,7 @@ template <class Num> class Recorder final : public TraceView {
 
   // An integer-valued geometry item (pixel, span).
   template <class... I> Recorder& igeo(GeoKind kind, I... values) {
+    if (muted_) return *this;
     geos_.push_back({kind, static_cast<std::uint32_t>(ints_.size()), sizeof...(I)});
     (ints_.push_back(static_cast<std::int64_t>(values)), ...);
     steps_.back().geo_end++;
@@ -133,6 +167,10 @@ template <class Num> class Recorder final : public TraceView {
     geos_.clear();
     ints_.clear();
     nums_.clear();
+    scopes_.clear();
+    stack_.clear();
+    depth_ = 0;
+    muted_ = false;
   }
   // Room for about `steps` steps of up to 4 variables and 2 geometry items each. Pages that are
   // never written are never faulted in, so a generous reserve is free; regrowth is not.
@@ -146,6 +184,9 @@ template <class Num> class Recorder final : public TraceView {
 
  private:
   std::vector<Num> nums_;
+  std::vector<std::uint8_t> stack_;  // the scopes entered and not left
+  int depth_ = 0, max_depth_ = 8;
+  bool muted_ = false;
 };
 
 }  // namespace sw

@@ -43,7 +43,7 @@ struct PixelHash {
   }
 };
 
-inline std::int64_t& coord(Pixel& p, int axis) { return axis == 0 ? p.x : p.y; }
+inline std::int64_t& pixel_axis(Pixel& p, int axis) { return axis == 0 ? p.x : p.y; }
 
 // grad P at the pixel p, by direct evaluation of the two derivative polynomials.
 template <class Num> Vec2<Num> implicit_gradient(const ImplicitPoly<Num>& P, Pixel p) {
@@ -117,19 +117,22 @@ template <class Num> struct DiffTable {
 
 struct ImplicitCurve {
   static constexpr std::string_view id = "implicit-curve";
-  static constexpr std::string_view summary = "Walks P(x, y) = 0 (degree <= 3) pixel by pixel: midpoint choice from mixed forward differences";
-#define SW_LINES_IMPLICIT_CURVE(X)                                                                                    \
-  X(start, "p <- start; k <- 0                       -- k counts the moves")                                            \
-  X(grad, "while k < max_steps: g <- grad P(p)     -- if g = 0: stop (singular)")                                       \
-  X(axes, "    t <- (-g_y, g_x); a <- axis of larger |t_a| (tie: x iff t_x t_y < 0); s_a <- sign t_a; s_b <- sign t_b (0: -sign g_b)") \
-  X(table, "    first time: Q_mn <- differences of Q(u, v) = P(u/2, v/2) at (u, v) = 2M, M = p + s_a e_a + s_b e_b / 2") \
-  X(probe, "    (u, v) -> 2M by unit steps: +1: Q_mn += Q_m+1,n low m first; -1: Q_mn -= Q_m+1,n high m first")         \
-  X(decide, "    diagonal <- Q_00 s_b g_b < 0          -- Q_00 = P(M); 0 keeps the axial pixel")                        \
-  X(move, "    p <- p + s_a e_a (+ s_b e_b if diagonal); k <- k + 1; stop if p = start (closed) or plotted (revisit)")   \
-  X(plot, "    plot p")                                                                                                 \
+  static constexpr std::string_view summary =
+      "Walks P(x, y) = 0 (degree <= 3) pixel by pixel, P at midpoints from mixed forward differences";
+  // clang-format off
+#define SW_LINES_IMPLICIT_CURVE(X)                                                                                           \
+  X(start, "p <- start; k <- 0                       -- k counts the moves")                                                 \
+  X(grad, "while k < max_steps: g <- grad P(p)     -- g = 0: stop (singular)")                                               \
+  X(axes, "    t <- (-g_y, g_x); a <- larger |t_a| (tie: x iff t_x t_y < 0); s_a <- sign t_a; s_b <- sign t_b (0: -sign g_b)")\
+  X(table, "    once: Q_mn <- differences of Q(u, v) = P(u/2, v/2) at (u, v) = 2M, M = p + s_a e_a + s_b e_b / 2")           \
+  X(probe, "    (u, v) -> 2M by unit steps: +1: Q_mn += Q_m+1,n low m first; -1: Q_mn -= Q_m+1,n high m first")              \
+  X(decide, "    diagonal <- Q_00 s_b g_b < 0          -- Q_00 = P(M); 0 keeps the axial pixel")                             \
+  X(move, "    p <- p + s_a e_a (+ s_b e_b if diagonal); k <- k + 1; stop if p = start (closed) or plotted (revisit)")       \
+  X(plot, "    plot p")                                                                                                      \
   X(done, "done                                    -- stopped: 0 closed, 1 max_steps, 2 singular, 3 revisit")
   SW_LISTING("Implicit curve by mixed forward differences", SW_LINES_IMPLICIT_CURVE)
 #undef SW_LINES_IMPLICIT_CURVE
+  // clang-format on
 };
 
 template <class Num, class Probe = NoProbe>
@@ -162,14 +165,15 @@ WalkEnd implicit_curve(const ImplicitPoly<Num>& P, std::vector<Pixel>& out, Prob
     if constexpr (Probe::on) probe.step(L::axes, StepKind::decide).idx("major", a).idx("sa", sa).idx("sb", sb);
     // The probe point 2M = 2p + 2 s_a e_a + s_b e_b on the doubled lattice.
     Pixel m2{2 * p.x, 2 * p.y};
-    coord(m2, a) += 2 * sa;
-    coord(m2, b) += sb;
+    pixel_axis(m2, a) += 2 * sa;
+    pixel_axis(m2, b) += sb;
     [[maybe_unused]] const auto half = [](std::int64_t w) { return Num(Num(w) / Num(2)); };  // x = u / 2
     if (!have_table) {
       T = DiffTable<Num>::at(P, m2.x, m2.y);
       have_table = true;
       if constexpr (Probe::on) {
-        static constexpr const char* kQ[4][4] = {{"Q00", "Q01", "Q02", "Q03"}, {"Q10", "Q11", "Q12", ""}, {"Q20", "Q21", "", ""}, {"Q30", "", "", ""}};
+        static constexpr const char* kQ[4][4] = {
+            {"Q00", "Q01", "Q02", "Q03"}, {"Q10", "Q11", "Q12", ""}, {"Q20", "Q21", "", ""}, {"Q30", "", "", ""}};
         auto& st = probe.step(L::table, StepKind::init).idx("u", T.u).idx("v", T.v);
         for (int m = 0; m < 4; ++m)
           for (int n = 0; m + n < 4; ++n) st.num(kQ[m][n], T.d[m][n]);
@@ -177,13 +181,18 @@ WalkEnd implicit_curve(const ImplicitPoly<Num>& P, std::vector<Pixel>& out, Prob
       }
     } else {
       T.move_to(m2.x, m2.y);
-      if constexpr (Probe::on) probe.step(L::probe, StepKind::advance).idx("u", T.u).idx("v", T.v).num("PM", T.d[0][0]).point(Vec2<Num>{half(T.u), half(T.v)});
+      if constexpr (Probe::on)
+        probe.step(L::probe, StepKind::advance)
+            .idx("u", T.u)
+            .idx("v", T.v)
+            .num("PM", T.d[0][0])
+            .point(Vec2<Num>{half(T.u), half(T.v)});
     }
     const bool diagonal = num::sign(T.d[0][0]) * sb * sgb < 0;
     if constexpr (Probe::on) probe.step(L::decide, StepKind::decide).num("PM", T.d[0][0]).idx("diagonal", diagonal);
     Pixel next = p;
-    coord(next, a) += sa;
-    if (diagonal) coord(next, b) += sb;
+    pixel_axis(next, a) += sa;
+    if (diagonal) pixel_axis(next, b) += sb;
     ++end.steps;
     if constexpr (Probe::on) probe.step(L::move, StepKind::advance).idx("x", next.x).idx("y", next.y).idx("k", end.steps);
     if (next == P.start) {
@@ -198,7 +207,8 @@ WalkEnd implicit_curve(const ImplicitPoly<Num>& P, std::vector<Pixel>& out, Prob
     out.push_back(p);
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).pixel(p);
   }
-  if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("stopped", static_cast<int>(end.stopped)).idx("steps", end.steps);
+  if constexpr (Probe::on)
+    probe.step(L::done, StepKind::done).idx("stopped", static_cast<int>(end.stopped)).idx("steps", end.steps);
   return end;
 }
 

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <random>
 #include "adapter.hpp"
+#include "curves/bezier_forward_diff.hpp"
 #include "curves/circle_interior.hpp"
 #include "curves/circle_midpoint.hpp"
 #include "curves/implicit_curve.hpp"
 #include "curves/poly_horner.hpp"
+#include "curves_bezier_oracle.hpp"
 #include "curves_oracle.hpp"
 #include "pixels.hpp"
 
@@ -150,7 +152,6 @@ template <class AlgoT> struct CircleSpec {
   }
 };
 
-
 // --- implicit-curve ---
 
 // Bounds: |start| <= 2^20, 1 <= max_steps <= 2^20, terms [coef, i, j] with i + j <= 3, each (i, j)
@@ -169,7 +170,8 @@ ImplicitInput parse_implicit(const Json& j) {
   only_keys(j, {"P", "start", "max_steps"}, "input");
   ImplicitInput in;
   const Json& P = j["P"];
-  if (!P.is_array() || P.empty()) throw InputError("input.P: expected a non-empty list of terms [coef, i, j] (P = sum coef x^i y^j)");
+  if (!P.is_array() || P.empty())
+    throw InputError("input.P: expected a non-empty list of terms [coef, i, j] (P = sum coef x^i y^j)");
   std::array<std::array<int, 4>, 4> seen{};  // 1 + the index of the term that set (i, j)
   int degree = 0;
   for (std::size_t k = 0; k < P.size(); ++k) {
@@ -180,8 +182,12 @@ ImplicitInput parse_implicit(const Json& j) {
     if (mpz_sizeinbase(coef.get_num_mpz_t(), 2) > 64 || mpz_sizeinbase(coef.get_den_mpz_t(), 2) > 64)
       throw InputError(what + "[0]: numerator or denominator beyond 64 bits");
     const auto i = parse_integer(t[1], what + "[1]", 0, 3), e = parse_integer(t[2], what + "[2]", 0, 3);
-    if (i + e > 3) throw InputError(what + ": x^" + std::to_string(i) + " y^" + std::to_string(e) + " has degree " + std::to_string(i + e) + ", beyond 3");
-    if (seen[i][e]) throw InputError(what + ": duplicate term x^" + std::to_string(i) + " y^" + std::to_string(e) + " (also input.P[" + std::to_string(seen[i][e] - 1) + "])");
+    if (i + e > 3)
+      throw InputError(what + ": x^" + std::to_string(i) + " y^" + std::to_string(e) + " has degree " + std::to_string(i + e) +
+                       ", beyond 3");
+    if (seen[i][e])
+      throw InputError(what + ": duplicate term x^" + std::to_string(i) + " y^" + std::to_string(e) + " (also input.P[" +
+                       std::to_string(seen[i][e] - 1) + "])");
     seen[i][e] = static_cast<int>(k) + 1;
     in.c[i][e] = coef;
     if (coef != 0) degree = std::max(degree, static_cast<int>(i + e));
@@ -190,9 +196,11 @@ ImplicitInput parse_implicit(const Json& j) {
   in.degree = degree;
   const Json& s = j["start"];
   if (!s.is_array() || s.size() != 2) throw InputError("input.start: expected the start pixel [x, y] (integers)");
-  in.start = {parse_integer(s[0], "input.start[0]", -kMaxStart, kMaxStart), parse_integer(s[1], "input.start[1]", -kMaxStart, kMaxStart)};
+  in.start = {parse_integer(s[0], "input.start[0]", -kMaxStart, kMaxStart),
+              parse_integer(s[1], "input.start[1]", -kMaxStart, kMaxStart)};
   in.max_steps = parse_integer(j["max_steps"], "input.max_steps", 1, kMaxWalk);
-  // |P| <= sum |c_ij| X^(i + j) for |x|, |y| <= X; the walk stays within max_steps + 1 of the start.
+  // |P| <= sum |c_ij| X^(i + j) for |x|, |y| <= X. Midpoints stay within max_steps of the start and
+  // the table's first corners within 2.
   const Rational X(std::max(std::abs(in.start.x), std::abs(in.start.y)) + in.max_steps + 2);
   Rational bound = 0;
   for (int a = 0; a < 4; ++a)
@@ -202,7 +210,8 @@ ImplicitInput parse_implicit(const Json& j) {
       bound += term;
     }
   if (bound > Rational(std::ldexp(1.0, 100)))
-    throw InputError("input: |P| may reach " + num::to_text(bound.get_d()) + " within max_steps of the start, beyond the bound 2^100");
+    throw InputError("input: |P| may reach " + num::to_text(bound.get_d()) +
+                     " within max_steps of the start, beyond the bound 2^100");
   return in;
 }
 
@@ -269,18 +278,24 @@ struct ImplicitSpec {
     BenchSet<Input> random{"random", {}}, hard{"hard", {}};
     // a x^2 + b y^2 = r^2 with a, b in {1/4, 1/2, ..., 4} (dyadic), started on the curve's left.
     for (int i = 0; i < 500; ++i) {
-      const Rational a(1 << u(0, 4), 4), b(1 << u(0, 4), 4);
+      const Rational a = Rational(1 << u(0, 4)) / 4, b = Rational(1 << u(0, 4)) / 4;  // canonical: no mpq_class(p, q)
       const std::int64_t r = u(1, 200);
       const std::int64_t x0 = -std::llround(static_cast<double>(r) / std::sqrt(a.get_d()));
       random.inputs.push_back(input({{a, 2, 0}, {b, 0, 2}, {Rational(-r * r), 0, 0}}, {x0, 0}, 8192));
     }
     // The corpus kinds: a line, a hyperbola along its asymptote, a nodal cubic, a cusp, a far start.
     for (int i = 0; i < 8; ++i) {
-      hard.inputs.push_back(input({{3, 1, 0}, {-7, 0, 1}, {Rational(u(-9, 9), 2), 0, 0}}, {0, 0}, 4096));
+      hard.inputs.push_back(input({{3, 1, 0}, {-7, 0, 1}, {Rational(u(-9, 9)) / 2, 0, 0}}, {0, 0}, 4096));
       hard.inputs.push_back(input({{1, 1, 1}, {-30, 0, 0}}, {1, 30}, 4096));
       hard.inputs.push_back(input({{1, 0, 2}, {-1, 3, 0}, {-8, 2, 0}}, {-3 - i, 4}, 4096));
       hard.inputs.push_back(input({{1, 0, 2}, {-1, 3, 0}}, {9 + i, 27}, 4096));
       hard.inputs.push_back(input({{1, 2, 0}, {1, 0, 2}, {-100, 0, 0}}, {40 + i, 3}, 4096));
+    }
+    // Large off-centre circles: P reaches 2^24 and more, where float's table starts to round.
+    for (std::int64_t r : {3000, 4097}) {
+      const std::int64_t cx = 1000, cy = -700;
+      hard.inputs.push_back(input({{1, 2, 0}, {1, 0, 2}, {-2 * cx, 1, 0}, {-2 * cy, 0, 1}, {cx * cx + cy * cy - r * r, 0, 0}},
+                                  {cx - r, cy}, 30000));
     }
     return {random, hard};
   }
@@ -288,12 +303,90 @@ struct ImplicitSpec {
 
 }  // namespace
 
+struct BezierInput {
+  std::array<Vec2<Rational>, 4> p;
+  std::int64_t n = 1;
+};
+
+struct BezierSpec {
+  using Algo = curves::BezierForwardDiff;
+  using Input = BezierInput;
+  using Output = PixelsOutput;
+  static constexpr std::int64_t kMaxCoord = std::int64_t{1} << 16, kMaxSegments = 1024;
+  static constexpr std::string_view family = "curves";
+  static constexpr std::array views{View::plane2d};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+  static inline const std::string example = R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"n":6})";
+  static Input parse(const Json& j, Numeric) {
+    only_keys(j, {"bezier", "n"}, "input");
+    const Json& b = j["bezier"];
+    if (!b.is_array() || b.size() != 4) throw InputError("input.bezier: expected four control points [[x,y],[x,y],[x,y],[x,y]]");
+    Input in;
+    for (int i = 0; i < 4; ++i) {
+      const std::string what = "input.bezier[" + std::to_string(i) + "]";
+      if (!b[i].is_array() || b[i].size() != 2) throw InputError(what + ": expected [x, y]");
+      for (int a = 0; a < 2; ++a) {
+        in.p[i][a] = parse_rational(b[i][a], what + "[" + std::to_string(a) + "]");
+        check_bound(in.p[i][a], double(kMaxCoord), what + "[" + std::to_string(a) + "]");
+        if (mpz_sizeinbase(in.p[i][a].get_den_mpz_t(), 2) > 64) throw InputError(what + ": denominator beyond 64 bits");
+      }
+    }
+    in.n = parse_integer(j["n"], "input.n", 1, kMaxSegments);
+    return in;
+  }
+  template <class Num> static curves::Bezier<Num> prepare(const Input& in) {
+    curves::Bezier<Num> b;
+    for (int i = 0; i < 4; ++i) b.p[i] = to_num<Num>(in.p[i]);
+    b.n = in.n;
+    return b;
+  }
+  template <class Num, class Probe> static Output compute(const curves::Bezier<Num>& b, Probe& probe) {
+    Output o;
+    curves::bezier_forward_diff<Num>(b, o.pixels, probe);
+    return o;
+  }
+  static Json to_json(const Output& o) { return pixels_json("pixels", o); }
+  static void write_members(const Output& o, std::ostream& os) { pixels_members("pixels", o, os); }
+  static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  // The curve lies in the control points' hull: at most its box's width + height pixels per pass.
+  static std::size_t estimate_steps(const Input& in) {
+    Rational span = 0;
+    for (int i = 0; i < 3; ++i) span += abs(Rational(in.p[i + 1].x - in.p[i].x)) + abs(Rational(in.p[i + 1].y - in.p[i].y));
+    return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 8 * static_cast<std::size_t>(in.n) + 16;
+  }
+  static Output oracle(const Input& in) { return {oracle::bezier_pixels(in.p, in.n)}; }
+  static std::vector<BenchSet<Input>> bench_sets() {
+    std::mt19937_64 rng(20261125);
+    auto u = [&](long lo, long hi) {
+      Rational r(std::uniform_int_distribution<long>(lo, hi)(rng), 8);
+      r.canonicalize();
+      return r;
+    };
+    BenchSet<Input> random{"random", {}}, fine{"fine", {}};
+    for (int i = 0; i < 1000; ++i) {
+      Input in;
+      for (auto& c : in.p) c = {u(-2000, 2000), u(-2000, 2000)};
+      in.n = std::uniform_int_distribution<std::int64_t>(4, 32)(rng);
+      random.inputs.push_back(in);
+    }
+    // Many short segments: the forward-difference table runs long, the DDA segments are short.
+    for (int i = 0; i < 20; ++i) {
+      Input in;
+      for (auto& c : in.p) c = {u(-8000, 8000), u(-8000, 8000)};
+      in.n = 1024;
+      fine.inputs.push_back(in);
+    }
+    return {random, fine};
+  }
+};
+
 void register_curves(std::vector<Algorithm>& out) {
   out.push_back(make_algorithm<CubicSpec<curves::PolyForwardDiff>>());
   out.push_back(make_algorithm<CubicSpec<curves::PolyHorner>>());
   out.push_back(make_algorithm<CircleSpec<curves::CircleInterior>>());
   out.push_back(make_algorithm<CircleSpec<curves::CircleMidpoint>>());
   out.push_back(make_algorithm<ImplicitSpec>());
+  out.push_back(make_algorithm<BezierSpec>());
 }
 
 }  // namespace sw

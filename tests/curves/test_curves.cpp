@@ -116,7 +116,12 @@ TEST_CASE("curves: cubics in exact and filtered equal the oracle on 10^4 random 
       const auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
       // Small dyadic and odd-denominator coefficients: both give y exactly on half-integers.
       const int den = i % 2 ? 64 : 3 * (1 + i % 5);
-      const std::array<Rational, 4> c{Rational(u(-4, 4), den * den), Rational(u(-40, 40), den), Rational(u(-300, 300), den), Rational(u(-999, 999), 2)};
+      auto q = [](long a, long b) {  // gmpxx leaves a/b as given: canonicalize before any arithmetic
+        Rational r(a, b);
+        r.canonicalize();
+        return r;
+      };
+      const std::array<Rational, 4> c{q(u(-4, 4), den * den), q(u(-40, 40), den), q(u(-300, 300), den), q(u(-999, 999), 2)};
       const std::int64_t xs = u(-60, 40), xe = xs + u(0, 24);
       INFO("case " << i);
       const auto want = oracle::poly_pixels(c, xs, xe);
@@ -136,7 +141,8 @@ TEST_CASE("curves: cubics in exact and filtered equal the oracle on 10^4 random 
 TEST_CASE("curves: the catalog's filtered and exact modes match the oracle through the adapter", "[curves][oracle]") {
   std::mt19937_64 rng(13);
   for (const Algorithm& alg : catalog()) {
-    if (alg.family != "curves") continue;
+    const bool cubic_alg = alg.id.rfind("poly", 0) == 0;
+    if (alg.family != "curves" || !(cubic_alg || alg.id.rfind("circle", 0) == 0)) continue;  // the others: their own files
     INFO(alg.id);
     const bool circle_alg = alg.id.rfind("circle", 0) == 0;
     for (int i = 0; i < 60; ++i) {

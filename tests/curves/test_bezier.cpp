@@ -1,0 +1,177 @@
+// bezier-forward-diff against its exact oracle (Bernstein points joined by the DDA specification),
+// every recorded value of its own steps against a closed form, and the nested dda-line listing.
+#include <catch2/catch.hpp>
+#include <map>
+#include <optional>
+#include <random>
+#include <set>
+#include <sstream>
+#include "catalog.hpp"
+#include "curves/bezier_forward_diff.hpp"
+#include "curves_bezier_oracle.hpp"
+#include "lines_oracle.hpp"
+#include "trace_io.hpp"
+
+using namespace sw;
+
+namespace {
+
+template <class Num> std::vector<Pixel> run(const std::array<Vec2<Rational>, 4>& p, std::int64_t n) {
+  curves::Bezier<Num> b;
+  for (int i = 0; i < 4; ++i) b.p[i] = {num::from_rational<Num>(p[i].x), num::from_rational<Num>(p[i].y)};
+  b.n = n;
+  std::vector<Pixel> out;
+  NoProbe none;
+  curves::bezier_forward_diff<Num>(b, out, none);
+  return out;
+}
+
+Rational q(long a, long b) {
+  Rational r(a, b);
+  r.canonicalize();
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("curves bezier: exact and filtered equal the oracle on 10^4 random curves", "[curves][bezier]") {
+  std::mt19937_64 rng(17);
+  auto u = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); };
+  std::size_t uncertain = 0;
+  for (int i = 0; i < 10000; ++i) {
+    std::array<Vec2<Rational>, 4> p;
+    for (auto& c : p) c = {q(u(-400, 400), 8), q(u(-400, 400), 8)};
+    const std::int64_t n = u(1, 12);
+    const auto want = oracle::bezier_pixels(p, n);
+    if (i % 4 == 0) REQUIRE(run<Rational>(p, n) == want);
+    std::optional<std::vector<Pixel>> f;
+    try {
+      f = run<Interval>(p, n);
+    } catch (const Uncertain&) {
+      ++uncertain;  // a sample within rounding of a pixel boundary: the chain runs exact
+    }
+    if (f) REQUIRE(*f == want);
+  }
+  CHECK(uncertain < 10000 / 4);  // t = k/n rounds for most n: samples near a boundary stay undecided
+}
+
+TEST_CASE("curves bezier: every value of its own steps matches its closed form and dda-line runs nested", "[curves][bezier]") {
+  const std::array<Vec2<Rational>, 4> p = {Vec2<Rational>{q(1, 2), 0}, {3, q(29, 4)}, {q(19, 2), q(-5, 3)}, {12, 6}};
+  auto B = [&](std::int64_t k, std::int64_t n) { return oracle::bezier_point(p, q(k, n)); };
+  for (std::int64_t n : {1, 3, 7}) {
+    for (int depth : {8, 0}) {
+      INFO("n = " << n << ", max depth " << depth);
+      curves::Bezier<Rational> b{p, n};
+      Recorder<Rational> t;
+      t.set_max_depth(depth);
+      std::vector<Pixel> out;
+      curves::bezier_forward_diff<Rational>(b, out, t);
+      REQUIRE(out == oracle::bezier_pixels(p, n));
+      const Listing L = curves::BezierForwardDiff::listing();
+      std::int64_t k = 0;
+      std::vector<Pixel> nested;  // pixels plotted by the nested dda-line of segment k
+      std::size_t nested_steps = 0;
+      auto values = [&](std::size_t s) {
+        std::map<std::string, Rational> v;
+        for (std::uint32_t x = t.at(s).var_begin; x < t.at(s).var_end; ++x)
+          v[t.var_at(x).name] = t.var_at(x).is_int ? Rational(t.int_value(t.var_at(x).slot)) : t.num_value(t.var_at(x).slot);
+        return v;
+      };
+      for (std::size_t s = 0; s < t.size(); ++s) {
+        const StepRecord& st = t.at(s);
+        if (st.scope) {
+          CHECK(t.scope_id(st.scope) == "dda-line");
+          CHECK(t.scope_listing(st.scope).title == lines::DdaLine::listing().title);
+          ++nested_steps;
+          for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g)
+            if (t.geo_at(g).kind == GeoKind::pixel) nested.push_back({t.int_value(t.geo_at(g).slot), t.int_value(t.geo_at(g).slot + 1)});
+          continue;
+        }
+        const std::string_view line = L.lines[st.line - 1].name;
+        INFO("step " << s << " line " << line);
+        auto v = values(s);
+        std::set<std::string> expected;
+        if (line == "samples") {
+          expected = {"q0x", "q0y", "q1x", "q1y"};
+          CHECK(v["q0x"] == B(0, n).x);
+          CHECK(v["q0y"] == B(0, n).y);
+          CHECK(v["q1x"] == B(1, n).x);
+          CHECK(v["q1y"] == B(1, n).y);
+          REQUIRE(st.geo_end - st.geo_begin == 1);
+          const GeoRecord& g = t.geo_at(st.geo_begin);
+          REQUIRE(g.kind == GeoKind::polyline);
+          const std::int64_t m = g.count / 2 - 1;
+          CHECK(m == std::min<std::int64_t>(8 * n, 512));
+          for (std::int64_t j = 0; j <= m; ++j) {
+            CHECK(t.num_value(g.slot + 2 * j) == B(j, m).x);
+            CHECK(t.num_value(g.slot + 2 * j + 1) == B(j, m).y);
+          }
+        } else if (line == "table") {
+          expected = {"d1x", "d1y", "d2x", "d2y", "d3x", "d3y"};
+          const auto d1 = B(1, n) - B(0, n), d2 = (B(2, n) - B(1, n)) - d1, d3 = (B(3, n) - B(2, n)) - (B(2, n) - B(1, n)) - d2;
+          CHECK(v["d1x"] == d1.x);
+          CHECK(v["d1y"] == d1.y);
+          CHECK(v["d2x"] == d2.x);
+          CHECK(v["d2y"] == d2.y);
+          CHECK(v["d3x"] == d3.x);
+          CHECK(v["d3y"] == d3.y);
+        } else if (line == "segment") {
+          expected = {"k"};
+          CHECK(v["k"] == k);
+          REQUIRE(st.geo_end - st.geo_begin == 1);
+          const GeoRecord& g = t.geo_at(st.geo_begin);
+          REQUIRE(g.kind == GeoKind::segment2);
+          CHECK(t.num_value(g.slot) == B(k, n).x);
+          CHECK(t.num_value(g.slot + 1) == B(k, n).y);
+          CHECK(t.num_value(g.slot + 2) == B(k + 1, n).x);
+          CHECK(t.num_value(g.slot + 3) == B(k + 1, n).y);
+          nested.clear();
+          nested_steps = 0;
+        } else if (line == "step") {
+          expected = {"k", "qx", "qy", "d1x", "d1y"};
+          // The nested call drew exactly the DDA specification of segment k (or nothing when summarised).
+          CHECK(nested == (depth > 0 ? oracle::column_pixels(B(k, n), B(k + 1, n), oracle::Sampling::ascending) : std::vector<Pixel>{}));
+          if (depth == 0) CHECK(nested_steps == 0);
+          else CHECK(nested_steps > 0);
+          ++k;
+          CHECK(v["k"] == k);
+          CHECK(v["qx"] == B(k, n).x);
+          CHECK(v["qy"] == B(k, n).y);
+          CHECK(v["d1x"] == B(k + 1, n).x - B(k, n).x);
+          CHECK(v["d1y"] == B(k + 1, n).y - B(k, n).y);
+          REQUIRE(st.geo_end - st.geo_begin == 1);
+          CHECK(t.geo_at(st.geo_begin).kind == GeoKind::point2);
+          CHECK(t.num_value(t.geo_at(st.geo_begin).slot) == B(k, n).x);
+          CHECK(t.num_value(t.geo_at(st.geo_begin).slot + 1) == B(k, n).y);
+        } else if (line == "done") {
+          expected = {"k"};
+          CHECK(v["k"] == n);
+        } else {
+          FAIL("no expectation for line " << line);
+        }
+        for (const auto& [name, value] : v) {
+          INFO("recorded " << name);
+          CHECK(expected.count(name));
+        }
+      }
+      CHECK(k == n);
+    }
+  }
+}
+
+TEST_CASE("curves bezier: check follows the nested listing and names a step from the wrong one", "[curves][bezier][check]") {
+  const Algorithm& alg = find_algorithm("bezier-forward-diff");
+  const Json in = Json::parse(alg.example);
+  std::stringstream good;
+  write_trace(alg, Numeric::exact, in, good);
+  CHECK(check_trace(good, false).status == 0);
+  // Move the first nested step out of dda-line's listing: the replay names the listing.
+  std::string text = good.str();
+  const auto at = text.find(",\"in\":\"dda-line\"");
+  REQUIRE(at != std::string::npos);
+  text.erase(at, std::string(",\"in\":\"dda-line\"").size());
+  std::stringstream bad(text);
+  const CheckReport rep = check_trace(bad, false);
+  CHECK(rep.status == 1);
+  CHECK_THAT(rep.message, Catch::Contains("listing: expected a step of dda-line"));
+}
