@@ -21,6 +21,7 @@
 //             static Json canonical(Json result): the result in the form the oracle states it
 //             (e.g. a set sorted), for comparing with the oracle;
 //             static bool bench_runs(set name, Numeric): false skips a set in that mode;
+//             static std::vector<Handle> handles(): the inputs a view lets the user drag;
 //             using Filters = std::tuple<number types for filtered mode> (default Interval): the
 //             stages of the filter, cheapest first. Each must throw Uncertain when it cannot
 //             decide, or raise its flag (Mag; see run_filter_stage), and have a NumericOf
@@ -264,6 +265,7 @@ template <class Spec> Algorithm make_algorithm() {
   a.summary = Spec::Algo::summary;
   a.listing = Spec::Algo::listing();
   a.views.assign(Spec::views.begin(), Spec::views.end());
+  if constexpr (requires { Spec::handles(); }) a.handles = Spec::handles();
   a.numerics.assign(Spec::numerics.begin(), Spec::numerics.end());
   a.example = Spec::example;
   auto result = [](const auto& out, Numeric n, bool fell_back) {

@@ -39,10 +39,21 @@ enum class View : std::uint8_t {
 };
 constexpr std::string_view view_name(View v) { return v == View::plane2d ? "plane2d" : "orbit3d"; }
 
+// An input value the user may drag or type on a view: a JSON pointer into the input, what it is,
+// and the grid it snaps to (1/snap; an integer input snaps to 1).
+struct Handle {
+  enum class Kind : std::uint8_t { point2, point3, direction3 };
+  std::string pointer;  // e.g. "/p0", "/bezier/2", "/ray/o"
+  Kind kind = Kind::point2;
+  int snap = 8;
+  std::string label;    // drawn beside it
+};
+
 struct Algorithm {
   std::string_view id, family, summary;
   Listing listing;
   std::vector<View> views;
+  std::vector<Handle> handles;
   std::vector<Numeric> numerics;  // the number types this algorithm runs on
   std::string example;            // a default input, as JSON text
   // All of these validate the input first and throw InputError naming the problem.

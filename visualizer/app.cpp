@@ -127,18 +127,19 @@ Json rational_json(const Rational& r) {
 }  // namespace
 
 void App::on_drag(const CanvasEvents::Drag& d) {
-  if (!alg_) return;
-  // Snap to eighths so that exact values stay short; fall back to integers when the algorithm
-  // takes integer endpoints (Bresenham) or the number type needs them.
-  for (long den : {8L, 1L}) {
+  if (!alg_ || d.handle < 0 || d.handle >= static_cast<int>(alg_->handles.size())) return;
+  const Handle& h = alg_->handles[d.handle];
+  // Snap to the handle's grid so that exact values stay short; fall back to integers when the
+  // number type needs them.
+  for (long den : {static_cast<long>(std::max(h.snap, 1)), 1L}) {
     Json in = input_;
     Rational x(mpz_class(std::lround(d.x * double(den))), mpz_class(den)), y(mpz_class(std::lround(d.y * double(den))), mpz_class(den));
     x.canonicalize(), y.canonicalize();
-    in[d.handle == 0 ? "p0" : "p1"] = Json::array({rational_json(x), rational_json(y)});
     try {
+      in[Json::json_pointer(h.pointer)] = Json::array({rational_json(x), rational_json(y)});
       alg_->validate(in, numeric_);
       if (compare_) alg_->validate(in, *compare_);
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
       edit_error_ = e.what();
       continue;
     }
@@ -148,18 +149,21 @@ void App::on_drag(const CanvasEvents::Drag& d) {
 }
 
 void App::fill_endpoint_fields() {
-  for (auto& t : endpoint_text_) t.clear();
-  if (!input_.is_object()) return;
-  for (int p = 0; p < 2; ++p) {
-    const Json* pt = input_.contains(p ? "p1" : "p0") ? &input_[p ? "p1" : "p0"] : nullptr;
-    if (!pt || !pt->is_array() || pt->size() != 2) continue;
-    for (int a = 0; a < 2; ++a) {
+  handle_text_.clear();
+  if (!alg_ || !input_.is_object()) return;
+  for (const Handle& h : alg_->handles) {
+    if (h.kind != Handle::Kind::point2) continue;
+    const Json::json_pointer ptr(h.pointer);
+    const Json* pt = input_.contains(ptr) ? &input_[ptr] : nullptr;
+    std::array<std::string, 2> text;
+    for (int a = 0; a < 2 && pt && pt->is_array() && pt->size() == 2; ++a) {
       try {
-        endpoint_text_[2 * p + a] = num::to_text(parse_rational((*pt)[a], "p"));
+        text[a] = num::to_text(parse_rational((*pt)[a], h.label));
       } catch (const InputError&) {
-        endpoint_text_[2 * p + a] = (*pt)[a].dump();
+        text[a] = (*pt)[a].dump();
       }
     }
+    handle_text_.push_back(text);
   }
 }
 

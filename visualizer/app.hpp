@@ -92,7 +92,7 @@ class App {
 
   // Messages and edit fields.
   std::string error_, edit_error_;
-  std::array<std::string, 4> endpoint_text_;
+  std::vector<std::array<std::string, 2>> handle_text_;  // the declared 2D handles' x and y, as typed
   std::string json_text_;
   std::uint32_t highlighted_line_ = 0;
   std::size_t listing_scrolled_to_ = ~std::size_t(0);

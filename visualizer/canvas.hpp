@@ -14,7 +14,7 @@ namespace sw::vis {
 struct CanvasEvents {
   std::optional<std::size_t> jump_to;  // clicked a plotted pixel: go to its step
   struct Drag {
-    int handle;       // 0: p0, 1: p1
+    int handle;       // the index of the declared handle (Algorithm::handles)
     double x, y;      // world position under the mouse
     bool released;    // the drag ended this frame
   };

@@ -72,22 +72,29 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
   // Row 2: the input. Segments get four exact fields; anything else a JSON field.
   if (alg_) {
     bool apply = false;
-    if (!endpoint_text_[0].empty() || !endpoint_text_[2].empty()) {
-      const char* labels[4] = {"p0 x", "y##p0", "p1 x", "y##p1"};
-      for (int k = 0; k < 4; ++k) {
-        if (k) ImGui::SameLine(0, k == 2 ? 20 : 8);
-        ImGui::TextUnformatted(k % 2 ? "y" : (k ? "p1  x" : "p0  x"));
-        ImGui::SameLine();
-        ImGui::SetNextItemWidth(110);
-        apply |= ImGui::InputText((std::string("##") + labels[k]).c_str(), &endpoint_text_[k], ImGuiInputTextFlags_EnterReturnsTrue);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("An exact value: an integer, a decimal like 2.75, or p/q. Enter applies.");
+    if (!handle_text_.empty()) {
+      // One exact x and y field per declared 2D handle (p0 and p1, the centre, control points).
+      std::size_t k = 0;
+      for (const Handle& h : alg_->handles) {
+        if (h.kind != Handle::Kind::point2 || k >= handle_text_.size()) continue;
+        for (int a = 0; a < 2; ++a) {
+          if (k || a) ImGui::SameLine(0, a ? 8 : 20);
+          ImGui::TextUnformatted(a ? "y" : (h.label + "  x").c_str());
+          ImGui::SameLine();
+          ImGui::SetNextItemWidth(handle_text_.size() > 2 ? 70 : 110);
+          const std::string id = "##" + h.pointer + (a ? "y" : "x");
+          apply |= ImGui::InputText(id.c_str(), &handle_text_[k][a], ImGuiInputTextFlags_EnterReturnsTrue);
+          if (ImGui::IsItemHovered()) ImGui::SetTooltip("An exact value: an integer, a decimal like 2.75, or p/q. Enter applies.");
+        }
+        ++k;
       }
       ImGui::SameLine();
       apply |= ImGui::Button("Apply");
       if (apply) {
         Json in = input_;
-        in["p0"] = Json::array({endpoint_text_[0], endpoint_text_[1]});
-        in["p1"] = Json::array({endpoint_text_[2], endpoint_text_[3]});
+        std::size_t j = 0;
+        for (const Handle& h : alg_->handles)
+          if (h.kind == Handle::Kind::point2 && j < handle_text_.size()) in[Json::json_pointer(h.pointer)] = Json::array({handle_text_[j][0], handle_text_[j][1]}), ++j;
         apply_input(in);
       }
     } else {
@@ -110,9 +117,9 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
       ImGui::TextColored(theme::kError, "%s", edit_error_.c_str());
     } else if (a_) {
       ImGui::SameLine(0, 16);
-      const bool segment = !endpoint_text_[0].empty() || !endpoint_text_[2].empty();
+      const bool segment = !handle_text_.empty();
       if (view_ == View::orbit3d) ImGui::TextDisabled("%zu steps%s", a_->size(), input_.contains("ray") ? "; drag o or o + d on the canvas" : "");
-      else ImGui::TextDisabled("%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment ? "; drag p0 or p1 on the canvas" : "");
+      else ImGui::TextDisabled("%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment ? "; drag the handles on the canvas" : "");
     }
   }
   ImGui::End();

@@ -101,17 +101,18 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
       cx_ = (*at)[0], cy_ = (*at)[1];
   }
   const ImGuiIO& io = ImGui::GetIO();
-  const auto seg = in.model ? in.model->segment() : std::nullopt;
+  const auto handles = in.model ? handle_points(*in.model) : std::vector<std::optional<std::array<double, 2>>>{};
 
-  // A press on an endpoint handle drags it; anywhere else it pans.
+  // A press on a declared handle drags it; anywhere else it pans.
   if (ImGui::IsItemActivated()) {
     moved_ = false;
     dragging_ = -1;
-    if (in.editable && seg && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-      for (int h = 0; h < 2; ++h) {
-        const ImVec2 p = to_screen((*seg)[2 * h], (*seg)[2 * h + 1]);
+    if (in.editable && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+      for (std::size_t h = 0; h < handles.size(); ++h) {
+        if (!handles[h]) continue;
+        const ImVec2 p = to_screen((*handles[h])[0], (*handles[h])[1]);
         const float dx = io.MousePos.x - p.x, dy = io.MousePos.y - p.y;
-        if (dx * dx + dy * dy <= 10.f * 10.f) dragging_ = h;
+        if (dx * dx + dy * dy <= 10.f * 10.f) dragging_ = static_cast<int>(h);
       }
   }
   if (active && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
@@ -209,6 +210,21 @@ void PixelCanvas::draw_grid(ImDrawList* dl) const {
   }
 }
 
+// Where each declared 2D handle is, read from the input (nothing for other kinds or when absent).
+std::vector<std::optional<std::array<double, 2>>> PixelCanvas::handle_points(const TraceModel& m) {
+  std::vector<std::optional<std::array<double, 2>>> out;
+  for (const Handle& h : m.algorithm().handles) {
+    out.emplace_back();
+    if (h.kind != Handle::Kind::point2) continue;
+    try {
+      const Json& v = m.input().at(Json::json_pointer(h.pointer));
+      if (v.is_array() && v.size() == 2) out.back() = std::array<double, 2>{parse_rational(v[0], h.label).get_d(), parse_rational(v[1], h.label).get_d()};
+    } catch (const std::exception&) {
+    }
+  }
+  return out;
+}
+
 void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
   const TraceModel& m = *in.model;
   if (auto px = m.pixel_at(in.step)) {
@@ -231,15 +247,18 @@ void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
     const ImVec2 a = to_screen((*seg)[0], (*seg)[1]), b = to_screen((*seg)[2], (*seg)[3]);
     // Zoomed out, the pixels are thinner than the segment: draw it faint so that they show.
     dl->AddLine(a, b, scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment, scale_ < 4 ? 1.f : 2.f);
-    const ImU32 col[2] = {theme::kHandleP0, theme::kHandleP1};
-    const char* name[2] = {"p0", "p1"};
-    const ImVec2 at[2] = {a, b};
-    for (int h = 0; h < 2; ++h) {
-      dl->AddCircleFilled(at[h], 6.5f, col[h], 16);
-      dl->AddCircle(at[h], 6.5f, IM_COL32(0, 0, 0, 255), 16, 1.5f);
-      if (in.editable && dragging_ == h) dl->AddCircle(at[h], 11.f, col[h], 20, 2.f);
-      dl->AddText(ImVec2(at[h].x + 9, at[h].y - 20), col[h], name[h]);
-    }
+  }
+  // The inputs the algorithm declares as handles, where the input holds them.
+  const auto handles = handle_points(m);
+  const auto& decl = m.algorithm().handles;
+  for (std::size_t h = 0; h < handles.size(); ++h) {
+    if (!handles[h]) continue;
+    const ImU32 col = h % 2 ? theme::kHandleP1 : theme::kHandleP0;
+    const ImVec2 at = to_screen((*handles[h])[0], (*handles[h])[1]);
+    dl->AddCircleFilled(at, 6.5f, col, 16);
+    dl->AddCircle(at, 6.5f, IM_COL32(0, 0, 0, 255), 16, 1.5f);
+    if (in.editable && dragging_ == static_cast<int>(h)) dl->AddCircle(at, 11.f, col, 20, 2.f);
+    dl->AddText(ImVec2(at.x + 9, at.y - 20), col, decl[h].label.c_str());
   }
   if (auto q = m.point_at(in.step)) {
     const ImVec2 p = to_screen((*q)[0], (*q)[1]);

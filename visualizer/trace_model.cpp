@@ -15,6 +15,15 @@ void WorldRect::add(double x, double y) {
 TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Recorded rec)
     : alg_(&alg), input_(std::move(input)), numeric_(numeric), rec_(std::move(rec)) {
   bounds_ = {1, 1, 0, 0};  // empty
+  // The declared 2D handles (control points may lie off the curve) are framed too.
+  for (const Handle& h : alg.handles) {
+    if (h.kind != Handle::Kind::point2) continue;
+    try {
+      const Json& v = input_.at(Json::json_pointer(h.pointer));
+      if (v.is_array() && v.size() == 2) bounds_.add(parse_rational(v[0], h.label).get_d(), parse_rational(v[1], h.label).get_d());
+    } catch (const std::exception&) {
+    }
+  }
   const TraceView& t = *rec_.trace;
   const std::size_t n = t.size();
   name_of_var_.resize(n ? t.at(n - 1).var_end : 0);

@@ -118,6 +118,7 @@ template <class AlgoT> struct CircleSpec {
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"c":[0,0],"r":9})";
   static Input parse(const Json& j, Numeric) { return parse_circle(j); }
+  static std::vector<Handle> handles() { return {{"/c", Handle::Kind::point2, 1, "c"}}; }
   template <class Num> static Input prepare(const Input& in) { return in; }
   template <class Num, class Probe> static Output compute(const Input& in, Probe& probe) {
     Output o;
@@ -232,6 +233,7 @@ struct ImplicitSpec {
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"P":[["1/4",2,0],[1,0,2],[-36,0,0]],"start":[-12,0],"max_steps":200})";
   static Input parse(const Json& j, Numeric) { return parse_implicit(j); }
+  static std::vector<Handle> handles() { return {{"/start", Handle::Kind::point2, 1, "start"}}; }
   template <class Num> static curves::ImplicitPoly<Num> prepare(const Input& in) {
     curves::ImplicitPoly<Num> p;
     for (int i = 0; i < 4; ++i)
@@ -333,6 +335,11 @@ struct BezierSpec {
     }
     in.n = parse_integer(j["n"], "input.n", 1, kMaxSegments);
     return in;
+  }
+  static std::vector<Handle> handles() {
+    std::vector<Handle> h;
+    for (int i = 0; i < 4; ++i) h.push_back({"/bezier/" + std::to_string(i), Handle::Kind::point2, 8, "P" + std::to_string(i)});
+    return h;
   }
   template <class Num> static curves::Bezier<Num> prepare(const Input& in) {
     curves::Bezier<Num> b;

@@ -70,6 +70,10 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
     return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 16;
   }
   static std::vector<BenchSet<Input>> bench_sets() { return segment_bench_sets(IntegerEndpoints); }
+  static std::vector<Handle> handles() {
+    const int snap = IntegerEndpoints ? 1 : 8;
+    return {{"/p0", Handle::Kind::point2, snap, "p0"}, {"/p1", Handle::Kind::point2, snap, "p1"}};
+  }
 };
 
 struct DdaLineSpec : SegmentSpec<lines::DdaLine, false> {

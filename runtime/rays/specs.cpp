@@ -215,6 +215,7 @@ template <class AlgoT, Prim P> struct RaySpec {
   static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static Input parse(const Json& j, Numeric) { return parse_input(j, P); }
+  static std::vector<Handle> handles() { return {{"/ray/o", Handle::Kind::point3, 8, "o"}, {"/ray/d", Handle::Kind::direction3, 0, "o + d"}}; }
   template <class Num> static Prepared<Num> prepare(const Input& in) {
     Prepared<Num> p;
     p.ray.o = to_num<Num>(in.o);
