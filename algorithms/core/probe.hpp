@@ -5,7 +5,9 @@
 //  - JsonlProbe<Num> (jsonl_probe.hpp): streams JSON lines; memory stays flat.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 #include "core/number.hpp"
@@ -32,8 +34,8 @@ struct VarRecord {
 };
 struct GeoRecord {
   GeoKind kind;
+  std::uint16_t count;  // geo_arity(kind), or the list's length for variable kinds (< 2^16)
   std::uint32_t slot;   // first of `count` values (integers for integer kinds)
-  std::uint32_t count;  // geo_arity(kind), or the list's length for variable kinds
 };
 
 // The number-independent part of a recorded trace, with virtual access to the numbers. The
@@ -91,10 +93,10 @@ template <class Num> class Recorder final : public TraceView {
   const Num& num_value(std::uint32_t s) const { return nums_[s]; }
 
   Recorder& step(std::uint32_t line, StepKind kind) {
-    muted_ = depth_ > max_depth_;
-    if (muted_) return *this;
+    if (depth_ > max_depth_) [[unlikely]]
+      return discarded(line, kind);
     auto nv = static_cast<std::uint32_t>(vars_.size()), ng = static_cast<std::uint32_t>(geos_.size());
-    steps_.push_back({line, kind, stack_.empty() ? std::uint8_t{0} : stack_.back(), nv, nv, ng, ng});
+    steps_.push_back({line, kind, scope_, nv, nv, ng, ng});
     return *this;
   }
   // Nested listings: the steps between enter and leave are the callee's, on its listing. Calls
@@ -107,21 +109,21 @@ template <class Num> class Recorder final : public TraceView {
     while (k < scopes_.size() && scopes_[k].id != id) ++k;
     if (k == scopes_.size()) scopes_.push_back({id, listing});
     stack_.push_back(static_cast<std::uint8_t>(k + 1));
+    scope_ = stack_.back();
   }
   void leave() {
     if (depth_-- > max_depth_) return;
     stack_.pop_back();
+    scope_ = stack_.empty() ? 0 : stack_.back();
   }
   void set_max_depth(int d) { max_depth_ = d; }
   Recorder& num(const char* name, const Num& v) {
-    if (muted_) return *this;
     vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false});
     nums_.push_back(v);
     steps_.back().var_end++;
     return *this;
   }
   Recorder& idx(const char* name, std::int64_t v) {
-    if (muted_) return *this;
     vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true});
     ints_.push_back(v);
     steps_.back().var_end++;
@@ -133,16 +135,15 @@ template <class Num> class Recorder final : public TraceView {
   // Any number-valued geometry: the values in the order SW_GEO_KINDS documents.
   template <class... V> Recorder& geo(GeoKind kind, const V&... values) {
     static_assert(sizeof...(V) > 0);
-    if (muted_) return *this;
-    geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size()), sizeof...(V)});
+    geos_.push_back({kind, sizeof...(V), static_cast<std::uint32_t>(nums_.size())});
     (nums_.push_back(values), ...);
     steps_.back().geo_end++;
     return *this;
   }
   // A variable-length kind (polyline, polygon): the points' coordinates in order.
   Recorder& geo_list(GeoKind kind, std::span<const Vec2<Num>> points) {
-    if (muted_) return *this;
-    geos_.push_back({kind, static_cast<std::uint32_t>(nums_.size()), static_cast<std::uint32_t>(2 * points.size())});
+    if (points.size() > 32767) throw std::length_error("a geometry list of more than 32767 points");
+    geos_.push_back({kind, static_cast<std::uint16_t>(2 * points.size()), static_cast<std::uint32_t>(nums_.size())});
     for (const auto& p : points) nums_.push_back(p.x), nums_.push_back(p.y);
     steps_.back().geo_end++;
     return *this;
@@ -152,8 +153,7 @@ template <class Num> class Recorder final : public TraceView {
 
   // An integer-valued geometry item (pixel, span).
   template <class... I> Recorder& igeo(GeoKind kind, I... values) {
-    if (muted_) return *this;
-    geos_.push_back({kind, static_cast<std::uint32_t>(ints_.size()), sizeof...(I)});
+    geos_.push_back({kind, sizeof...(I), static_cast<std::uint32_t>(ints_.size())});
     (ints_.push_back(static_cast<std::int64_t>(values)), ...);
     steps_.back().geo_end++;
     return *this;
@@ -170,7 +170,7 @@ template <class Num> class Recorder final : public TraceView {
     scopes_.clear();
     stack_.clear();
     depth_ = 0;
-    muted_ = false;
+    scope_ = 0;
   }
   // Room for about `steps` steps of up to 4 variables and 2 geometry items each. Pages that are
   // never written are never faulted in, so a generous reserve is free; regrowth is not.
@@ -184,9 +184,19 @@ template <class Num> class Recorder final : public TraceView {
 
  private:
   std::vector<Num> nums_;
+  // A summarised callee's steps go to a scratch recorder, emptied at each step, so that the
+  // recording calls need no check of their own.
+  [[gnu::cold, gnu::noinline]] Recorder& discarded(std::uint32_t line, StepKind kind) {
+    if (!scratch_) scratch_ = std::make_unique<Recorder>();
+    scratch_->clear();
+    scratch_->steps_.push_back({line, kind, 0, 0, 0, 0, 0});
+    return *scratch_;
+  }
+
   std::vector<std::uint8_t> stack_;  // the scopes entered and not left
   int depth_ = 0, max_depth_ = 8;
-  bool muted_ = false;
+  std::uint8_t scope_ = 0;  // the innermost recorded scope
+  std::unique_ptr<Recorder> scratch_;
 };
 
 }  // namespace sw

@@ -9,6 +9,7 @@
 #include <set>
 #include "catalog.hpp"
 #include "cli_harness.hpp"
+#include "step_values.hpp"
 #include "curves/circle_interior.hpp"
 #include "curves/circle_midpoint.hpp"
 #include "curves/poly_horner.hpp"
@@ -17,6 +18,10 @@
 using namespace sw;
 
 namespace {
+
+using testing::StepValues;
+using testing::require_all_checked;
+using testing::values_of;
 
 std::vector<Pixel> sorted(std::vector<Pixel> v) {
   std::sort(v.begin(), v.end());
@@ -48,27 +53,6 @@ template <class Num> std::vector<Pixel> cubic(bool forward, const std::array<Rat
 
 Rational P(const std::array<Rational, 4>& c, const Rational& x) { return c[0] * x * x * x + c[1] * x * x + c[2] * x + c[3]; }
 
-// A recorded value by name: integers exactly, numbers as exact rationals.
-struct StepValues {
-  std::map<std::string, Rational> v;
-  std::set<std::string> checked;
-  const Rational& operator[](const std::string& name) {
-    checked.insert(name);
-    INFO("variable " << name);
-    REQUIRE(v.count(name));
-    return v.at(name);
-  }
-};
-
-StepValues values_of(const Recorder<Rational>& t, std::size_t s) {
-  StepValues out;
-  const StepRecord& st = t.at(s);
-  for (std::uint32_t k = st.var_begin; k < st.var_end; ++k) {
-    const VarRecord& var = t.var_at(k);
-    out.v[var.name] = var.is_int ? Rational(t.int_value(var.slot)) : t.num_value(var.slot);
-  }
-  return out;
-}
 
 std::vector<Pixel> pixels_of(const Recorder<Rational>& t, std::size_t s) {
   std::vector<Pixel> px;
@@ -77,13 +61,6 @@ std::vector<Pixel> pixels_of(const Recorder<Rational>& t, std::size_t s) {
   return px;
 }
 
-// Every variable a step records must have been checked by the closed-form expectation.
-void require_all_checked(const StepValues& sv, std::size_t step) {
-  for (const auto& [name, value] : sv.v) {
-    INFO("step " << step << " records " << name << " with no expectation");
-    CHECK(sv.checked.count(name));
-  }
-}
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <set>
 #include "catalog.hpp"
 #include "cli_harness.hpp"
+#include "step_values.hpp"
 #include "curves/implicit_curve.hpp"
 #include "curves_oracle.hpp"
 #include "input.hpp"
@@ -18,6 +19,10 @@
 using namespace sw;
 
 namespace {
+
+using testing::StepValues;
+using testing::require_all_checked;
+using testing::values_of;
 
 using Coeffs = std::array<std::array<Rational, 4>, 4>;
 
@@ -115,33 +120,7 @@ Rational diff(const Coeffs& c, std::int64_t u, std::int64_t v, int m, int n) {
   return s;
 }
 
-// A recorded value by name: integers exactly, numbers as exact rationals (as in test_curves.cpp).
-struct StepValues {
-  std::map<std::string, Rational> v;
-  std::set<std::string> checked;
-  const Rational& operator[](const std::string& name) {
-    checked.insert(name);
-    INFO("variable " << name);
-    REQUIRE(v.count(name));
-    return v.at(name);
-  }
-};
 
-StepValues values_of(const Recorder<Rational>& t, std::size_t s) {
-  StepValues out;
-  for (std::uint32_t k = t.at(s).var_begin; k < t.at(s).var_end; ++k) {
-    const VarRecord& var = t.var_at(k);
-    out.v[var.name] = var.is_int ? Rational(t.int_value(var.slot)) : t.num_value(var.slot);
-  }
-  return out;
-}
-
-void require_all_checked(const StepValues& sv, std::size_t step) {
-  for (const auto& [name, value] : sv.v) {
-    INFO("step " << step << " records " << name << " with no expectation");
-    CHECK(sv.checked.count(name));
-  }
-}
 
 Case random_case(std::mt19937_64& rng, int i) {
   const auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
