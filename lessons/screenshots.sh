@@ -16,3 +16,4 @@ shot 05-triangle-crack     # (ray family) the lesson's start step
 shot 06-far-sphere         # (ray family) the lesson's start step
 shot 07-midpoint-circle        # the decision after the first rows
 shot 08-forward-difference-drift  # the first pixel where float and exact differ
+shot 09-implicit-node           # the move past the node onto the other branch
