@@ -46,7 +46,7 @@ struct CameraRayAlgo {
 template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {
   using L = CameraRayAlgo;
   CameraRay<Num> out;
-  auto unit = [](const Vec3<Num>& a) { return Num(Num(1) / sqrt_any(dot(a, a))) * a; };
+  auto unit = [](const Vec3<Num>& a) { return Num(Num(1) / num::sqrt_of(dot(a, a))) * a; };
   const Vec3<Num> n = unit(c.vpn), u = unit(cross(c.vup, n)), v = cross(n, u);
   if constexpr (Probe::on)
     probe.step(L::frame, StepKind::init).num("ux", u.x).num("uy", u.y).num("uz", u.z).num("vx", v.x).num("vy", v.y).num("vz", v.z)
@@ -56,25 +56,25 @@ template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Came
   if constexpr (Probe::on) probe.step(L::screen, StepKind::init).idx("i", i).idx("j", j).num("sx", sx).num("sy", sy);
   Vec3<Num> dir;
   if (c.projection == Projection::perspective) {
-    const Num hh = Num(c.dist * tan_num(Num(c.fov * half))), hw = Num(hh * w / h);
+    const Num hh = Num(c.dist * num::tan(Num(c.fov * half))), hw = Num(hh * w / h);
     if constexpr (Probe::on) probe.step(L::window, StepKind::init).num("hh", hh).num("hw", hw);
     const Vec3<Num> p1 = c.eye - c.dist * n + Num(sx * hw) * u + Num(sy * hh) * v;
     dir = p1 - c.eye;
     if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p1);
   } else if (c.projection == Projection::fisheye) {
-    const Num x = Num(sx * w / h), rho = sqrt_any(Num(x * x + sy * sy));
-    const Num theta = Num(rho * c.fov * half), phi = atan2_num(sy, x);
+    const Num x = Num(sx * w / h), rho = num::sqrt_of(Num(x * x + sy * sy));
+    const Num theta = Num(rho * c.fov * half), phi = num::atan2(sy, x);
     if constexpr (Probe::on) probe.step(L::fisheye, StepKind::decide).num("rho", rho).num("theta", theta).num("phi", phi);
     if (rho > Num(1)) {
       if constexpr (Probe::on) probe.step(L::circle, StepKind::miss);
       return out;
     }
-    const Num st = sin_num(theta);
-    dir = Num(st * cos_num(phi)) * u + Num(st * sin_num(phi)) * v - cos_num(theta) * n;
+    const Num st = num::sin(theta);
+    dir = Num(st * num::cos(phi)) * u + Num(st * num::sin(phi)) * v - num::cos(theta) * n;
   } else {
     const Num phi = Num(sx * c.fov * half * w / h);
     if constexpr (Probe::on) probe.step(L::cyl, StepKind::decide).num("phi", phi);
-    dir = c.dist * (sin_num(phi) * u - cos_num(phi) * n) + Num(sy * c.dist * tan_num(Num(c.fov * half))) * v;
+    dir = c.dist * (num::sin(phi) * u - num::cos(phi) * n) + Num(sy * c.dist * num::tan(Num(c.fov * half))) * v;
   }
   out.valid = true;
   out.ray = {c.eye, dir};

@@ -60,7 +60,9 @@ template <class Num, class Probe = NoProbe>
   if constexpr (Probe::on) probe.step(L::chord, StepKind::decide).num("h2", h2);
   // Near root when the origin is outside; the far root when inside or on the sphere (there the
   // near root is <= 0).
-  out.t = Num(add_root(tca, outside ? -1 : 1, h2, out.t_exact) / a);
+  const num::Rooted<Num> n = add_root(tca, outside ? -1 : 1, h2);
+  out.t = Num(n.value / a);
+  out.t_exact = n.exact;
   out.hit = true;
   if constexpr (Probe::on) probe.step(L::root, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
   return out;

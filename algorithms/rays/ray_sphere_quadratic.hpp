@@ -36,12 +36,12 @@ template <class Num, class Probe = NoProbe>
     return out;
   }
   const Num two_a = Num(Num(2) * a), nb = Num(-b);
-  bool e0 = true, e1 = true;
-  const Num n0 = add_root(nb, -1, disc, e0), n1 = add_root(nb, 1, disc, e1);
+  const num::Rooted<Num> r0 = add_root(nb, -1, disc), r1 = add_root(nb, 1, disc);
+  const Num n0 = r0.value, n1 = r1.value;
   if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("n0", n0).num("n1", n1).num("t0", Num(n0 / two_a)).num("t1", Num(n1 / two_a));
   // Branch-free from here (the outcome depends on the data); only the reported root is divided.
   const bool near_hit = n0 > Num(0), far_hit = n1 > Num(0);
-  out = {bool(near_hit | far_hit), Num(num::select(near_hit, n0, n1) / two_a), near_hit ? e0 : e1};
+  out = {bool(near_hit | far_hit), Num(num::select(near_hit, n0, n1) / two_a), near_hit ? r0.exact : r1.exact};
   if constexpr (Probe::on) {
     if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
     else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));

@@ -44,7 +44,9 @@ template <class Num, class Probe = NoProbe>
     return out;
   }
   const bool b_neg = bh < Num(0);
-  const Num s = sqrt_num(disc, out.t_exact);
+  const num::Rooted<Num> root = num::root(disc);
+  const Num s = root.value;
+  out.t_exact = root.exact;
   const Num q = num::select(b_neg, Num(s - bh), Num(Num(-bh) - s));
   if constexpr (Probe::on) probe.step(L::q, StepKind::decide).num("q", q);
   if (q == Num(0)) {

@@ -47,7 +47,7 @@ template <class Num, class Probe = NoProbe>
   }
   const Vec3<Num> p = r.o + t * r.d;
   if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p);
-  const int k = max_axis(n), i = (k + 1) % 3, j = (k + 2) % 3;
+  const int k = num::max_axis(n), i = (k + 1) % 3, j = (k + 2) % 3;
   if constexpr (Probe::on) probe.step(L::drop, StepKind::decide).idx("k", k);
   const Vec3<Num> w = p - vtx[0];
   const Num nk = Num(e1[i] * e2[j] - e1[j] * e2[i]);  // = n_k, nonzero as |n_k| is max and n != 0

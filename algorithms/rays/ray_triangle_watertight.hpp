@@ -40,7 +40,7 @@ template <class Num, class Probe = NoProbe>
 [[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_watertight(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) {
   using L = RayTriangleWatertight;
   TriangleHit<Num> out;
-  const int kz = max_axis(r.d);
+  const int kz = num::max_axis(r.d);
   int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
   if (r.d[kz] < Num(0)) std::swap(kx, ky);
   if constexpr (Probe::on)

@@ -33,14 +33,14 @@ template <class Num, class Probe = NoProbe> SphereUV<Num> sphere_uv(const Vec3<N
   using L = SphereUVAlgo;
   SphereUV<Num> out;
   const Vec3<Num> q = p - c;
-  out.normal = Num(Num(1) / sqrt_any(dot(q, q))) * q;
+  out.normal = Num(Num(1) / num::sqrt_of(dot(q, q))) * q;
   const Vec3<Num>& n = out.normal;
   if constexpr (Probe::on) probe.step(L::normal, StepKind::init).num("Nx", n.x).num("Ny", n.y).num("Nz", n.z).point(p).geo(GeoKind::segment3, p.x, p.y, p.z, Num(p.x + n.x), Num(p.y + n.y), Num(p.z + n.z));
-  out.lon = atan2_num(n.y, n.x);
+  out.lon = num::atan2(n.y, n.x);
   if constexpr (Probe::on) probe.step(L::lon, StepKind::advance).num("lon", out.lon);
-  out.lat = atan2_num(n.z, sqrt_any(Num(n.x * n.x + n.y * n.y)));
+  out.lat = num::atan2(n.z, num::sqrt_of(Num(n.x * n.x + n.y * n.y)));
   if constexpr (Probe::on) probe.step(L::lat, StepKind::advance).num("lat", out.lat);
-  const Num pi = pi_num<Num>();
+  const Num pi = num::pi<Num>();
   out.u = Num(Num(out.lon + pi) / Num(Num(2) * pi));
   out.v = Num(Num(out.lat + Num(pi * Num(0.5))) / pi);
   if constexpr (Probe::on) probe.step(L::uv, StepKind::done).num("u", out.u).num("v", out.v);

@@ -145,7 +145,7 @@ RayOutput make_output(bool hit, const Num& t, bool t_exact, const std::array<Num
     e->hit = hit;
     if (hit) {
       e->t_exact = t_exact;
-      e->t = t_exact ? t : ray::round_bits(t, oracle::kSphereTBits);
+      e->t = t_exact ? t : num::round_bits(t, oracle::kSphereTBits);
       if (b) e->b = *b;
       if (tn) e->t_near = *tn, e->t_far = *tf;
       if (attr) e->attr = *attr;
@@ -367,7 +367,7 @@ template <class Num> ValuesOutput values_output(bool valid, std::initializer_lis
   if constexpr (std::is_same_v<Num, float>) o.bits = 24;
   if constexpr (std::is_same_v<Num, Rational>) {
     auto r = std::make_shared<std::vector<Rational>>();
-    for (const Num& v : xs) r->push_back(ray::round_bits(v, 200)), o.x.push_back(v.get_d());
+    for (const Num& v : xs) r->push_back(num::round_bits(v, 200)), o.x.push_back(v.get_d());
     o.ref = std::move(r);
   } else {
     for (const Num& v : xs) o.x.push_back(num::to_double(v));
@@ -401,7 +401,7 @@ struct CameraSpec {
   };
   template <class Num> static Prepared<Num> prepare(const Input& in) {
     ray::Camera<Num> c{to_num<Num>(in.eye), to_num<Num>(in.vpn), to_num<Num>(in.vup), num::from_rational<Num>(in.dist), Num(0), in.w, in.h, in.projection};
-    if constexpr (std::is_same_v<Num, Rational>) c.fov = in.fov_deg * ray::pi_num<Rational>() / 180;
+    if constexpr (std::is_same_v<Num, Rational>) c.fov = in.fov_deg * num::pi<Rational>() / 180;
     else c.fov = Num(num::from_rational<Num>(in.fov_deg) * Num(3.14159265358979323846 / 180));
     return {c, in.i, in.j};
   }

@@ -281,7 +281,7 @@ TEST_CASE("rays: seeded random cases against the oracle", "[rays]") {
     // sphere (centre a, radius r), box (a sorted against b), plane (p = a, n = b)
     {
       const auto want = oracle::ray_sphere(oq, dq, rq(a), Rational(r));
-      auto check_sph = [&](const auto& h) { REQUIRE((h.t_exact ? h.t : ray::round_bits(h.t, oracle::kSphereTBits)) == want.t); };
+      auto check_sph = [&](const auto& h) { REQUIRE((h.t_exact ? h.t : num::round_bits(h.t, oracle::kSphereTBits)) == want.t); };
       auto with = [&](auto fn) {
         return [&, fn](auto t) {
           using Num = typename decltype(t)::type;
@@ -480,7 +480,7 @@ TEST_CASE("rays: exact step replay, every variable", "[rays]") {
           }
           INFO("variable " << name << " at step " << s);
           REQUIRE(want.has_value());  // every recorded number has an independent expectation
-          if (approx) CHECK(ray::round_bits(got, oracle::kSphereTBits) == *want);
+          if (approx) CHECK(num::round_bits(got, oracle::kSphereTBits) == *want);
           else CHECK(got == *want);
           ++checked;
         }
