@@ -136,3 +136,20 @@ TEST_CASE("catalog: docs/trace.schema.json is the schema derived from the vocabu
     if (g.arity) CHECK(props[std::string(g.name)]["maxItems"] == g.arity);
   }
 }
+
+TEST_CASE("catalog: every Catch2 test name survives ctest's registration", "[catalog][suite]") {
+  // ctest splits a registered name at ';' and trims it; such a test would match no case and run
+  // nothing (this found one in the ray tests). Names must also be unique (a duplicate is
+  // registered once). Commas are escaped by Catch's ctest registration and are fine.
+  std::set<std::string> names;
+  for (const Catch::TestCase& tc : Catch::getAllTestCasesSorted(*Catch::getCurrentContext().getConfig())) {
+    const std::string& name = tc.getTestCaseInfo().name;
+    INFO(name);
+    CHECK(name.find(';') == std::string::npos);
+    CHECK(!name.empty());
+    CHECK(name.front() != ' ');
+    CHECK(name.back() != ' ');
+    CHECK(names.insert(name).second);
+  }
+  CHECK(names.size() > 50);
+}

@@ -167,4 +167,101 @@ TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the re
   CHECK(ray_canvas(app, 0).camera().yaw != yaw);
   CHECK(app.model(0)->input() == edited);
 }
+
+TEST_CASE("visualizer rays: the GLM orbit camera is a pinhole camera in doubles", "[visualizer][rays]") {
+  // Expectations restated from the camera's definition, not from its code: the eye on the sphere
+  // of radius dist around the target (yaw around z from +x, pitch above the xy plane), looking
+  // at the target; right is horizontal, up completes the frame; a point at depth z and camera
+  // offsets (x, y) lands at the rectangle's centre plus focal * (x, -y) / z, focal = 0.5 h / tan(fov / 2).
+  OrbitCamera cam;
+  cam.target = V3(1.25e8, -0.75e8, 0.5e8);
+  cam.yaw = 2.1, cam.pitch = -0.35, cam.dist = 40, cam.fov = 0.9;
+  cam.origin = {100, 60}, cam.size = {900, 500};
+  const double cy = std::cos(cam.yaw), sy = std::sin(cam.yaw), cp = std::cos(cam.pitch), sp = std::sin(cam.pitch);
+  const V3 fwd(-cp * cy, -cp * sy, -sp), right(-sy, cy, 0), up(-sp * cy, -sp * sy, cp);
+  const double focal = 0.5 * 500 / std::tan(0.9 / 2), mid_x = 100 + 450, mid_y = 60 + 250;
+  CHECK(glm::length(cam.forward() - fwd) < 1e-14);
+  CHECK(glm::length(cam.right() - right) < 1e-14);
+  CHECK(glm::length(cam.up() - up) < 1e-14);
+  CHECK(glm::length(cam.eye() - (cam.target - 40.0 * fwd)) < 1e-6);
+  // The view is glm's right-handed lookAt (eye space looks down -z), and to_camera applies it.
+  const glm::dmat4 look = glm::lookAt(cam.eye(), cam.target, V3(0, 0, 1)), view = cam.view();
+  for (int c = 0; c < 4; ++c) CHECK(glm::length(look[c] - view[c]) <= 1e-9 * (c == 3 ? 1e8 : 1));
+  for (const V3& p : {cam.target, cam.target + V3(5, -3, 2), V3(0.0)}) {
+    const glm::dvec4 by_matrix = view * glm::dvec4(p, 1.0);
+    CHECK(glm::length(V3(by_matrix) - cam.to_camera(p)) <= 1e-7);
+  }
+  auto screen = [&](V3 p) {
+    const auto s = cam.project(p);
+    REQUIRE(s);
+    return *s;
+  };
+
+  SECTION("a point on the view axis projects to the rectangle's centre") {
+    for (double along : {-39.0, 0.0, 25.0, 1e7}) {
+      const auto s = screen(cam.target + along * fwd);
+      CHECK(s[0] == Approx(mid_x).margin(1e-6));
+      CHECK(s[1] == Approx(mid_y).margin(1e-6));
+    }
+  }
+  SECTION("offsets right and up move right and up by focal * offset / depth") {
+    for (double behind : {0.0, 60.0}) {  // at the target's depth and further away
+      const double depth = 40 + behind;
+      const auto s = screen(cam.target + behind * fwd + 3.0 * right + 2.0 * up);
+      CHECK(s[0] == Approx(mid_x + focal * 3 / depth).margin(1e-5));
+      CHECK(s[1] == Approx(mid_y - focal * 2 / depth).margin(1e-5));  // up on screen: y decreases
+      const auto l = screen(cam.target + behind * fwd - 0.5 * right - 4.0 * up);
+      CHECK(l[0] == Approx(mid_x - focal * 0.5 / depth).margin(1e-5));
+      CHECK(l[1] == Approx(mid_y + focal * 4 / depth).margin(1e-5));
+    }
+    CHECK(cam.units_per_pixel(cam.target) == Approx(40 / focal).epsilon(1e-12));
+  }
+  SECTION("project then unproject on the facing plane gives the point back, 1e8 from the origin") {
+    auto round_trip = [&](V3 p) {
+      const auto s = screen(p);
+      const V3 q = cam.unproject_on_facing_plane(s[0], s[1], p);
+      CHECK(glm::length(q - p) <= 1e-9 * glm::length(p));
+      const auto back = screen(q);
+      CHECK(back[0] == Approx(s[0]).margin(1e-5));
+      CHECK(back[1] == Approx(s[1]).margin(1e-5));
+    };
+    // Zoomed in on the far target...
+    round_trip(cam.target + 3.0 * right - 7.0 * up);
+    round_trip(cam.target + 30.0 * fwd - 11.0 * right + 5.0 * up);
+    // ...and framing a scene 1e8 across.
+    cam.frame(V3(0.0), 1e8);
+    for (const V3& p : {V3(1e8, 0, 0), V3(-0.5e8, 0.8e8, 0.3e8), V3(0.2e8, -0.9e8, -0.6e8), V3(0.6e8, 0.6e8, 0.7e8)}) round_trip(p);
+    // A screen position off the point's own: the facing plane through p, offset in the camera's axes.
+    cam.frame(V3(1e8, 1e8, -1e8), 1);
+    const V3 p = cam.target + 0.25 * right;
+    const double depth = cam.dist;
+    const V3 q = cam.unproject_on_facing_plane(mid_x + 50, mid_y - 20, p);
+    CHECK(glm::length(q - (cam.eye() + depth * fwd + (50 * depth / focal) * right + (20 * depth / focal) * up)) <= 1e-6);
+  }
+  SECTION("a segment crossing the near plane is clipped to it") {
+    cam.target = V3(3, -2, 1);  // near the origin: the clipped end lies far off screen, at focal / n pixels per unit
+    const double n = cam.near_plane();
+    CHECK(n == 40 * 1e-4);
+    const V3 e = cam.eye();
+    const V3 a = e + 5.0 * fwd + 2.0 * right + 1.0 * up, b = e - 5.0 * fwd - 2.0 * right + 3.0 * up;
+    CHECK_FALSE(cam.project(b));
+    const double t = (5 - n) / 10;  // where the depth 5 - 10 t reaches the near plane
+    const double x = 2 - 4 * t, y = 1 + 2 * t;
+    for (bool reversed : {false, true}) {
+      const auto s = reversed ? cam.project_segment(b, a) : cam.project_segment(a, b);
+      REQUIRE(s);
+      const std::array<double, 2> sa = screen(a), sc{mid_x + focal * x / n, mid_y - focal * y / n};
+      const std::size_t ia = reversed ? 2 : 0, ic = reversed ? 0 : 2;
+      CHECK((*s)[ia] == Approx(sa[0]).margin(1e-6));
+      CHECK((*s)[ia + 1] == Approx(sa[1]).margin(1e-6));
+      CHECK((*s)[ic] == Approx(sc[0]).epsilon(1e-6));
+      CHECK((*s)[ic + 1] == Approx(sc[1]).epsilon(1e-6));
+    }
+    CHECK_FALSE(cam.project_segment(b, e - 1.0 * fwd));  // wholly behind the near plane
+    const auto front = cam.project_segment(a, cam.target);  // wholly in front: both ends as projected
+    REQUIRE(front);
+    CHECK((*front)[2] == Approx(mid_x).margin(1e-6));
+    CHECK((*front)[3] == Approx(mid_y).margin(1e-6));
+  }
+}
 #endif  // SW_HAVE_VISUALIZER

@@ -59,10 +59,10 @@ RayScene RayScene::from_model(const TraceModel& m) {
     }
   }
   // Draw the ray a little past the primitive's far side (and at least to the o + d handle).
-  const double dd = dot(sc.d, sc.d);
+  const double dd = glm::dot(sc.d, sc.d);
   if (sc.has_ray && dd > 0) {
     double far = 1;
-    auto reach = [&](V3 p, double pad) { far = std::max(far, (dot(p - sc.o, sc.d) + pad * std::sqrt(dd)) / dd); };
+    auto reach = [&](V3 p, double pad) { far = std::max(far, (glm::dot(p - sc.o, sc.d) + pad * std::sqrt(dd)) / dd); };
     switch (sc.prim) {
       case Prim::sphere: reach(sc.v[0], sc.r); break;
       case Prim::box:
@@ -101,7 +101,7 @@ void RayScene::bounds(V3& centre, double& radius) const {
   if (prim == Prim::plane) add(v[0]);
   if (lo.x > hi.x) lo = {-1, -1, -1}, hi = {1, 1, 1};
   centre = 0.5 * (lo + hi);
-  radius = std::max(0.5 * norm(hi - lo), 1e-6);
+  radius = std::max(0.5 * glm::length(hi - lo), 1e-6);
 }
 
 // [SECTION] editing the ray through its handles
@@ -144,7 +144,7 @@ void RayCanvas::follow(const Canvas& other) {
 // Looks at the ray from its side (a little ahead of square on), so that it never points at the eye.
 void RayCanvas::face_ray(const RayScene& sc) {
   orient_pending_ = false;
-  if (!sc.has_ray || std::hypot(sc.d.x, sc.d.y) < 1e-3 * norm(sc.d)) return;  // vertical ray: any yaw will do
+  if (!sc.has_ray || std::hypot(sc.d.x, sc.d.y) < 1e-3 * glm::length(sc.d)) return;  // vertical ray: any yaw will do
   cam_.yaw = std::atan2(sc.d.y, sc.d.x) - M_PI / 2 + 0.5;
   cam_.pitch = 0.6;
 }
@@ -160,8 +160,8 @@ void RayCanvas::focus(const TraceModel& m, std::size_t step, double) {
       if (t.geo_at(g).kind == GeoKind::point3) at = V3{t.geo_double(t.geo_at(g), 0), t.geo_double(t.geo_at(g), 1), t.geo_double(t.geo_at(g), 2)};
   double size = 1;
   if (sc.prim == RayScene::Prim::sphere) size = 2.5 * sc.r, at = at ? at : sc.v[0];
-  if (sc.prim == RayScene::Prim::box) size = norm(sc.v[1] - sc.v[0]);
-  if (sc.prim == RayScene::Prim::triangle) size = std::max({norm(sc.v[1] - sc.v[0]), norm(sc.v[2] - sc.v[1]), norm(sc.v[0] - sc.v[2])}) * 0.6;
+  if (sc.prim == RayScene::Prim::box) size = glm::length(sc.v[1] - sc.v[0]);
+  if (sc.prim == RayScene::Prim::triangle) size = std::max({glm::length(sc.v[1] - sc.v[0]), glm::length(sc.v[2] - sc.v[1]), glm::length(sc.v[0] - sc.v[2])}) * 0.6;
   if (!at) {
     fit_pending_ = true;
     return;

@@ -15,7 +15,7 @@ namespace sw::vis {
 struct RayScene {
   enum class Prim { none, sphere, box, triangle, plane } prim = Prim::none;
   bool has_ray = false;
-  V3 o, d;
+  V3 o{0, 0, 0}, d{0, 0, 0};
   std::array<V3, 3> v{};  // sphere: v[0] = centre; box: min, max; triangle: vertices; plane: p, n
   double r = 0;           // sphere radius
   double t_max = 1;       // the ray is drawn from o to o + t_max d
@@ -49,7 +49,7 @@ class RayCanvas final : public Canvas {
 
   bool fit_pending_ = true, orient_pending_ = true;  // F re-frames; a new trace also turns to face its ray
   int dragging_ = -1;  // 0: o, 1: o + d, 2: orbit, 3: pan
-  V3 drag_anchor_;     // the handle's world position when the drag began (its facing plane)
+  V3 drag_anchor_{0, 0, 0};  // the handle's world position when the drag began (its facing plane)
 };
 
 // The drawing of one frame, given the scene and the step (ray_draw.cpp).

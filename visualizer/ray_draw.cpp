@@ -81,7 +81,7 @@ int sign_of(double x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
 
 void draw_sphere(const Painter& p, V3 c, double r) {
   const V3 e = p.cam.eye(), ax = unit(e - c);
-  const double dist = norm(e - c);
+  const double dist = glm::length(e - c);
   // Latitude and longitude circles (z is the pole), faint: they give the sphere its depth.
   for (int lat = -60; lat <= 60; lat += 30)
     for (int k = 0; k < 48; ++k) {
@@ -97,7 +97,7 @@ void draw_sphere(const Painter& p, V3 c, double r) {
     }
   if (dist <= r * 1.0001) return;  // inside: no silhouette
   // The silhouette: the circle of tangency seen from the eye, centre c + (r^2/D) ax, radius r sqrt(1 - r^2/D^2).
-  const V3 cc = c + (r * r / dist) * ax, u = unit(cross(ax, std::fabs(ax.z) < 0.9 ? V3{0, 0, 1} : V3{1, 0, 0})), w = cross(ax, u);
+  const V3 cc = c + (r * r / dist) * ax, u = unit(glm::cross(ax, std::fabs(ax.z) < 0.9 ? V3{0, 0, 1} : V3{1, 0, 0})), w = glm::cross(ax, u);
   const double rr = r * std::sqrt(std::max(0.0, 1 - (r / dist) * (r / dist)));
   std::vector<ImVec2> pts;
   for (int k = 0; k < 96; ++k) {
@@ -134,9 +134,9 @@ void draw_primitive(const Painter& p, const RayScene& sc) {
     }
     case RayScene::Prim::plane: {
       const V3 n = unit(sc.v[1]);
-      const V3 foot = sc.has_ray ? sc.o - dot(sc.o - sc.v[0], n) * n : sc.v[0];
-      const V3 u = unit(cross(n, std::fabs(n.z) < 0.9 ? V3{0, 0, 1} : V3{1, 0, 0})), w = cross(n, u);
-      const double h = std::max({1.0, norm(sc.o - foot), sc.has_ray ? 0.6 * sc.t_max * norm(sc.d) : 1.0});
+      const V3 foot = sc.has_ray ? sc.o - glm::dot(sc.o - sc.v[0], n) * n : sc.v[0];
+      const V3 u = unit(glm::cross(n, std::fabs(n.z) < 0.9 ? V3{0, 0, 1} : V3{1, 0, 0})), w = glm::cross(n, u);
+      const double h = std::max({1.0, glm::length(sc.o - foot), sc.has_ray ? 0.6 * sc.t_max * glm::length(sc.d) : 1.0});
       for (int k = -5; k <= 5; ++k) {
         const double f = h * k / 5;
         p.line(foot + f * u - h * w, foot + f * u + h * w, k == 0 ? kPrim : kPrimDim, k == 0 ? 1.5f : 1.f);
@@ -179,13 +179,13 @@ void draw_handles(const Painter& p, const RayScene& sc, int active) {
 // [SECTION] quantities of the current step: sphere, box, triangle
 
 void sphere_quantities(const Painter& p, const RayScene& sc, const Vars& vars, std::vector<std::string>& info) {
-  const double a = dot(sc.d, sc.d);
+  const double a = glm::dot(sc.d, sc.d);
   char buf[160];
   // Closest approach, once the algorithm has projected the centre onto the ray (tca, b or b').
   if (sc.has_ray && a > 0 && (vars.find("tca") || vars.find("b") || vars.find("b'"))) {
-    const double tc = dot(sc.v[0] - sc.o, sc.d) / a;
+    const double tc = glm::dot(sc.v[0] - sc.o, sc.d) / a;
     const V3 pc = sc.o + tc * sc.d;
-    const double d2 = vars.get("m2").value_or(dot(pc - sc.v[0], pc - sc.v[0]));
+    const double d2 = vars.get("m2").value_or(glm::dot(pc - sc.v[0], pc - sc.v[0]));
     p.line(sc.v[0], pc, kClosest, 1.5f);
     p.dot(sc.v[0], 3.5f, kPrim);
     p.dot(pc, 4.5f, kClosest);
@@ -366,7 +366,7 @@ void draw_ray_scene(ImDrawList* dl, const OrbitCamera& cam, const RayScene& sc, 
   const ImVec2 base(float(cam.origin[0] + 40), float(cam.origin[1] + cam.size[1] - 60));
   const V3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (int k = 0; k < 3; ++k) {
-    const ImVec2 tip(base.x + float(dot(axes[k], cam.right())) * 24, base.y - float(dot(axes[k], cam.up())) * 24);
+    const ImVec2 tip(base.x + float(glm::dot(axes[k], cam.right())) * 24, base.y - float(glm::dot(axes[k], cam.up())) * 24);
     dl->AddLine(base, tip, kAxis[k], 2.f);
     dl->AddText(ImVec2(tip.x - 3, tip.y - 8), kAxis[k], k == 0 ? "x" : k == 1 ? "y" : "z");
   }

@@ -91,7 +91,7 @@ bool close(const Rational& x, const Rational& y) {
 
 }  // namespace
 
-TEST_CASE("rays: every corpus case, exact and filtered equal the oracle; float and double stay finite", "[rays]") {
+TEST_CASE("rays: every corpus case: exact and filtered equal the oracle and float and double stay finite", "[rays]") {
   int cases = 0;
   for (const Json& c : read_jsonl("corpus.jsonl")) {
     const std::string prim = c["primitive"];
