@@ -1,0 +1,150 @@
+// How strict `check` is: every kind of field tampered with, one at a time, fails at the right step
+// and names the field; legitimate variation (key order, number spelling, rounding within the
+// trace's tolerance) passes.
+#include <catch2/catch.hpp>
+#include <sstream>
+#include "catalog.hpp"
+#include "trace_io.hpp"
+
+using namespace sw;
+
+namespace {
+
+std::vector<Json> trace_lines(const char* alg, const char* input, Numeric n) {
+  std::stringstream s;
+  write_trace(find_algorithm(alg), n, Json::parse(input), s);
+  std::vector<Json> out;
+  std::string line;
+  while (std::getline(s, line)) out.push_back(Json::parse(line));
+  return out;
+}
+
+CheckReport check(const std::vector<Json>& lines, bool decisions_only = false) {
+  std::stringstream s;
+  for (const Json& l : lines) s << l.dump() << '\n';
+  return check_trace(s, decisions_only);
+}
+
+// The index (in `lines`) of the first step with this kind that records `var`.
+std::size_t find_step(const std::vector<Json>& lines, const char* kind, const char* var) {
+  for (std::size_t i = 1; i + 1 < lines.size(); ++i)
+    if (lines[i]["kind"] == kind && lines[i]["vars"].contains(var)) return i;
+  FAIL("no " << kind << " step with " << var);
+  return 0;
+}
+
+void require_diverges(const std::vector<Json>& lines, std::size_t step, const std::string& field, bool decisions_only = false) {
+  const CheckReport r = check(lines, decisions_only);
+  INFO(r.message);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.message, Catch::StartsWith("step " + std::to_string(step) + " diverges"));
+  if (!field.empty()) CHECK_THAT(r.message, Catch::Contains(field));
+}
+
+const char* kDda = R"({"p0":["1/3",1],"p1":[9,"7/2"]})";
+
+}  // namespace
+
+TEST_CASE("check: the untampered exact trace agrees", "[check]") {
+  for (const char* alg : {"dda-line", "circle-midpoint", "poly-forward-diff", "bezier-forward-diff"}) {
+    INFO(alg);
+    const Algorithm& a = find_algorithm(alg);
+    const auto lines = trace_lines(alg, alg == std::string("dda-line") ? kDda : a.example.c_str(), Numeric::exact);
+    CHECK(check(lines).status == 0);
+  }
+}
+
+TEST_CASE("check: a numeric variable tampered fails and only with values compared", "[check]") {
+  auto lines = trace_lines("dda-line", kDda, Numeric::exact);
+  const std::size_t i = find_step(lines, "plot", "qy");
+  lines[i]["vars"]["qy"] = Rational(parse_rational(lines[i]["vars"]["qy"], "") + Rational(1, 1000)).get_str();
+  require_diverges(lines, i - 1, "variable qy");
+  CHECK(check(lines, true).status == 0);  // --decisions-only ignores numbers
+}
+
+TEST_CASE("check: an integer variable tampered fails even with --decisions-only", "[check]") {
+  auto lines = trace_lines("dda-line", kDda, Numeric::exact);
+  const std::size_t i = find_step(lines, "plot", "j");
+  lines[i]["vars"]["j"] = lines[i]["vars"]["j"].get<int>() + 1;
+  require_diverges(lines, i - 1, "variable j");
+  require_diverges(lines, i - 1, "variable j", true);
+}
+
+TEST_CASE("check: each geometry kind tampered fails at its step", "[check]") {
+  struct Case {
+    const char *alg, *kind;
+    bool decision;
+  };
+  for (const Case& c : {Case{"dda-line", "pixel", true}, Case{"dda-line", "point", false}, Case{"dda-line", "segment", false},
+                        Case{"circle-midpoint", "circle", false}, Case{"poly-forward-diff", "polyline", false},
+                        Case{"bezier-forward-diff", "segment", false}}) {
+    INFO(c.alg << " " << c.kind);
+    const Algorithm& a = find_algorithm(c.alg);
+    auto lines = trace_lines(c.alg, c.alg == std::string("dda-line") ? kDda : a.example.c_str(), Numeric::exact);
+    std::size_t at = 0;
+    for (std::size_t i = 1; i + 1 < lines.size() && !at; ++i)
+      for (Json& g : lines[i]["geo"])
+        if (g.contains(c.kind) && !at) {
+          Json& v = g[c.kind][0];
+          v = v.is_number_integer() ? Json(v.get<int>() + 1) : Json(Rational(parse_rational(v, "") + 1).get_str());
+          at = i;
+        }
+    REQUIRE(at > 0);
+    require_diverges(lines, at - 1, std::string(".") + c.kind);
+    CHECK(check(lines, true).status == (c.decision ? 1 : 0));
+  }
+}
+
+TEST_CASE("check: a step added, removed or swapped fails at that step", "[check]") {
+  const auto good = trace_lines("dda-line", kDda, Numeric::exact);
+  const std::size_t i = find_step(good, "plot", "qy");
+  auto added = good;
+  added.insert(added.begin() + static_cast<long>(i), good[i]);
+  require_diverges(added, i, "");
+  auto removed = good;
+  removed.erase(removed.begin() + static_cast<long>(i));
+  require_diverges(removed, i - 1, "");
+  auto swapped = good;
+  std::swap(swapped[i], swapped[i + 1]);
+  require_diverges(swapped, i - 1, "");
+  auto truncated = good;
+  truncated.erase(truncated.end() - 2);  // the last step
+  CHECK(check(truncated).status == 1);
+}
+
+TEST_CASE("check: a tampered result fails and names it", "[check]") {
+  auto lines = trace_lines("dda-line", kDda, Numeric::exact);
+  lines.back()["result"]["pixels"][2][1] = lines.back()["result"]["pixels"][2][1].get<int>() + 1;
+  const CheckReport r = check(lines);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.message, Catch::StartsWith("result diverges") && Catch::Contains("result.pixels[2][1]"));
+  CHECK(check(lines, true).status == 1);  // pixels are decisions
+}
+
+TEST_CASE("check: key order and number spelling are legitimate variation", "[check]") {
+  auto lines = trace_lines("dda-line", kDda, Numeric::exact);
+  std::size_t respelled = 0;
+  for (std::size_t i = 1; i + 1 < lines.size(); ++i) {
+    // Rebuild vars in reverse key order, numbers as decimals where exact ("1/2" -> 0.5).
+    Json vars = Json::object();
+    std::vector<std::string> keys;
+    for (auto it = lines[i]["vars"].begin(); it != lines[i]["vars"].end(); ++it) keys.push_back(it.key());
+    for (auto k = keys.rbegin(); k != keys.rend(); ++k) {
+      const Json& v = lines[i]["vars"][*k];
+      const bool dyadic = v.is_string() && mpz_popcount(parse_rational(v, "").get_den_mpz_t()) == 1;
+      vars[*k] = dyadic ? Json(parse_rational(v, "").get_d()) : v;
+      respelled += dyadic;
+    }
+    Json step = Json::object();  // also a different member order
+    step["geo"] = lines[i]["geo"];
+    step["vars"] = vars;
+    step["kind"] = lines[i]["kind"];
+    step["line"] = lines[i]["line"];
+    step["step"] = lines[i]["step"];
+    lines[i] = step;
+  }
+  CHECK(respelled > 10);
+  const CheckReport r = check(lines);
+  INFO(r.message);
+  CHECK(r.status == 0);
+}
