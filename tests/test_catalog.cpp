@@ -28,18 +28,19 @@ std::vector<Json> corpus(std::string_view family) {
   return out;
 }
 
-// Lines no step of their own is for, each with the reason. Loop headers: the test shows on the
-// steps inside the loop. Sub-steps: the line's values are recorded by the step of the line named.
+// A loop header ("while ...:", "for ...:", "repeat ...:") has no step of its own: its test shows on
+// the steps inside the loop. Recognised by the code ending in ':' (before any "--" comment).
+bool loop_header(std::string_view text) {
+  text = text.substr(0, text.find("--"));
+  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
+  return !text.empty() && text.back() == ':';
+}
+
+// Other lines with no step of their own, each with the reason: their values are recorded by the
+// step of the line named.
 const std::map<std::pair<std::string_view, std::string_view>, std::string_view> kUnreached = {
-    {{"dda-line", "test"}, "loop header"},
-    {{"poly-forward-diff", "test"}, "loop header"},
-    {{"poly-horner", "test"}, "loop header"},
-    {{"circle-interior", "test"}, "loop header"},
-    {{"circle-midpoint", "test"}, "loop header"},
-    {{"bezier-forward-diff", "test"}, "loop header"},
     {{"dda-grid-walk", "up"}, "recorded by visit_up"},
     {{"dda-grid-walk", "down"}, "recorded by visit_down"},
-    {{"ray-box", "axis"}, "loop header"},
     {{"ray-box", "slab"}, "recorded by clip"},
     {{"ray-box", "order"}, "recorded by clip"},
     {{"ray-sphere-geometric", "hit"}, "recorded by root (a hit step)"},
@@ -77,7 +78,7 @@ TEST_CASE("catalog: every listing line is reached by a step of the examples and 
       const std::string_view name = alg.listing.lines[id - 1].name;
       INFO("line " << id << " (" << name << ")");
       if (kUnreached.count({alg.id, name})) CHECK(!reached.count(id));  // keep the allow-list honest
-      else CHECK(reached.count(id));
+      else if (!loop_header(alg.listing.lines[id - 1].text)) CHECK(reached.count(id));
     }
   }
 }
