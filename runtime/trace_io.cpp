@@ -38,7 +38,7 @@ std::string trace_schema() {
   const OJ number = {{"$ref", "#/$defs/number"}};
   OJ kinds = OJ::array(), numerics = OJ::array(), geo_props = OJ::object();
   for (std::string_view k : kStepKindNames) kinds.push_back(k);
-  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact, Numeric::reference}) numerics.push_back(numeric_name(n));
+  for (Numeric n : kNumerics) numerics.push_back(numeric_name(n));
   for (const GeoDesc& g : kGeoDescs) {
     OJ item = {{"type", "array"}, {"items", g.integer ? OJ{{"type", "integer"}} : number}};
     if (g.arity) item["minItems"] = g.arity, item["maxItems"] = g.arity;
@@ -68,6 +68,7 @@ std::string trace_schema() {
                   {"required", OJ::array({"step", "line", "kind", "vars", "geo"})},
                   {"properties",
                    {{"step", {{"type", "integer"}, {"minimum", 0}}},
+                    {"in", {{"type", "string"}, {"description", "inside a nested call: the callee's id; line is in its listing"}}},
                     {"line", {{"type", "integer"}, {"minimum", 1}}},
                     {"kind", {{"enum", kinds}}},
                     {"vars", {{"type", "object"}, {"additionalProperties", number}}},

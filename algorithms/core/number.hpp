@@ -1,6 +1,7 @@
 // Number policies: one algorithm body runs on float, double, int64, exact rationals (GMP mpq) and
 // filtered intervals. Algorithms only use + - * /, comparisons and the helpers in namespace num.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -27,8 +28,10 @@ constexpr std::string_view numeric_name(Numeric n) {
   return "?";
 }
 
+inline constexpr std::array kNumerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact, Numeric::reference};
+
 inline std::optional<Numeric> parse_numeric(std::string_view s) {
-  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact, Numeric::reference})
+  for (Numeric n : kNumerics)
     if (numeric_name(n) == s) return n;
   return std::nullopt;
 }

@@ -50,7 +50,6 @@ class TraceView {
   std::size_t size() const { return steps_.size(); }
   // The callee listings entered during the run (nested scopes), by scope number from 1; the
   // algorithm's own listing is scope 0 and not stored here.
-  std::size_t scope_count() const { return scopes_.size(); }
   const Listing& scope_listing(std::uint8_t k) const { return scopes_[k - 1].listing; }
   std::string_view scope_id(std::uint8_t k) const { return scopes_[k - 1].id; }
   const StepRecord& at(std::size_t i) const { return steps_[i]; }
@@ -63,12 +62,9 @@ class TraceView {
   std::string value_text(const VarRecord& v) const {
     return v.is_int ? std::to_string(ints_[v.slot]) : num_text(v.slot);
   }
-  // Coordinate k of a geometry item, as a double; its lossless text.
+  // Coordinate k of a geometry item, as a double.
   double geo_double(const GeoRecord& g, int k) const {
     return geo_desc(g.kind).integer ? static_cast<double>(ints_[g.slot + k]) : num_double(g.slot + k);
-  }
-  std::string geo_text(const GeoRecord& g, int k) const {
-    return geo_desc(g.kind).integer ? std::to_string(ints_[g.slot + k]) : num_text(g.slot + k);
   }
 
  protected:
@@ -107,7 +103,10 @@ template <class Num> class Recorder final : public TraceView {
     if (depth_ > max_depth_) return;
     std::size_t k = 0;
     while (k < scopes_.size() && scopes_[k].id != id) ++k;
-    if (k == scopes_.size()) scopes_.push_back({id, listing});
+    if (k == scopes_.size()) {
+      if (k == 255) throw std::length_error("more than 255 different nested listings in one trace");
+      scopes_.push_back({id, listing});
+    }
     stack_.push_back(static_cast<std::uint8_t>(k + 1));
     scope_ = stack_.back();
   }
