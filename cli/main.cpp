@@ -71,13 +71,13 @@ int main(int argc, char** argv) {
   auto* trace = app.add_subcommand("trace", "Write a JSONL step trace of one run");
   trace->add_option("algorithm", alg_id, "Algorithm id (see `stepwise list`)")->required();
   trace->add_option("--input", input_arg, "Input as JSON text or a file holding it")->required();
-  trace->add_option("--numeric", numeric, "float | double | int | filtered | exact");
+  trace->add_option("--numeric", numeric, "float | double | int | filtered | exact | reference");
   trace->add_option("--out", out_path, "Output file (default: standard output)");
 
   auto* run = app.add_subcommand("run", "Run a batch of inputs untraced: one result line per input line");
   run->add_option("algorithm", alg_id, "Algorithm id")->required();
   run->add_option("--inputs", inputs_path, "JSONL file, one input per line")->required();
-  run->add_option("--numeric", numeric, "float | double | int | filtered | exact");
+  run->add_option("--numeric", numeric, "float | double | int | filtered | exact | reference");
   run->add_option("--out", out_path, "Output file (default: standard output)");
 
   auto* check = app.add_subcommand("check", "Replay a trace against the exact oracle; exit 0 agree, 1 diverge, 2 malformed");
