@@ -71,7 +71,7 @@ std::string trace_schema() {
                     {"in", {{"type", "string"}, {"description", "inside a nested call: the callee's id; line is in its listing"}}},
                     {"line", {{"type", "integer"}, {"minimum", 1}}},
                     {"kind", {{"enum", kinds}}},
-                    {"vars", {{"type", "object"}, {"additionalProperties", number}}},
+                    {"vars", {{"type", "object"}, {"additionalProperties", {{"oneOf", OJ::array({number, {{"type", "array"}, {"items", number}, {"minItems", 2}, {"maxItems", 3}}})}}}}},
                     {"geo", {{"type", "array"},
                              {"items", {{"type", "object"}, {"minProperties", 1}, {"maxProperties", 1}, {"properties", geo_props}, {"additionalProperties", false}}}}}}}};
   defs["result"] = {{"type", "object"}, {"required", OJ::array({"result"})}, {"properties", {{"result", {{"type", "object"}}}}}, {"additionalProperties", false}};
@@ -288,9 +288,19 @@ void require_step_shape(const Json& j, std::size_t lineno) {
   if (!j.contains("kind") || !j["kind"].is_string()) bad("step without a string \"kind\"");
   if (!j.contains("vars") || !j["vars"].is_object()) bad("step without a \"vars\" object");
   if (!j.contains("geo") || !j["geo"].is_array()) bad("step without a \"geo\" array");
-  for (auto it = j["vars"].begin(); it != j["vars"].end(); ++it)
-    if (!it->is_number() && !it->is_string()) bad("a variable that is neither a number nor a \"p/q\" string");
-    else if (it->is_string()) (void)parse_rational(*it, "line " + std::to_string(lineno) + ": vars." + it.key());
+  // A variable is a number, a "p/q" string, or a vector of 2 or 3 of them.
+  auto number = [&](const Json& v, const std::string& what) {
+    if (!v.is_number() && !v.is_string()) bad("a variable that is neither a number, a \"p/q\" string nor a vector of them");
+    if (v.is_string()) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what);
+  };
+  for (auto it = j["vars"].begin(); it != j["vars"].end(); ++it) {
+    if (!it->is_array()) {
+      number(*it, "vars." + it.key());
+      continue;
+    }
+    if (it->size() < 2 || it->size() > 3) bad("a vector variable of other than 2 or 3 components");
+    for (const Json& c : *it) number(c, "vars." + it.key());
+  }
 }
 
 }  // namespace

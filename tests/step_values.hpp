@@ -1,5 +1,5 @@
 // Reading an exact recorded step for the per-step expectations: every variable by name (integers
-// exactly, numbers as rationals), and a check that fails for a variable no expectation looked at.
+// exactly, numbers as rationals, vectors as name.x, name.y, name.z), and a check that fails for a variable no expectation looked at.
 #pragma once
 #include <catch2/catch.hpp>
 #include <map>
@@ -25,7 +25,10 @@ inline StepValues values_of(const Recorder<Rational>& t, std::size_t s) {
   StepValues out;
   for (std::uint32_t k = t.at(s).var_begin; k < t.at(s).var_end; ++k) {
     const VarRecord& var = t.var_at(k);
-    out.v[var.name] = var.is_int ? Rational(t.int_value(var.slot)) : t.num_value(var.slot);
+    if (var.is_int) out.v[var.name] = Rational(t.int_value(var.slot));
+    else if (var.count == 1) out.v[var.name] = t.num_value(var.slot);
+    else  // a vector's components as name.x, name.y, name.z
+      for (std::uint32_t c = 0; c < var.count; ++c) out.v[std::string(var.name) + "." + "xyz"[c]] = t.num_value(var.slot + c);
   }
   return out;
 }

@@ -148,3 +148,15 @@ TEST_CASE("check: key order and number spelling are legitimate variation", "[che
   INFO(r.message);
   CHECK(r.status == 0);
 }
+
+TEST_CASE("check: a vector variable's component tampered fails and names it", "[check]") {
+  const Algorithm& a = find_algorithm("bezier-forward-diff");
+  auto lines = trace_lines("bezier-forward-diff", a.example.c_str(), Numeric::exact);
+  const std::size_t i = find_step(lines, "init", "d1");
+  REQUIRE(lines[i]["vars"]["d1"].is_array());
+  lines[i]["vars"]["d1"][1] = Rational(parse_rational(lines[i]["vars"]["d1"][1], "") + 1).get_str();
+  require_diverges(lines, i - 1, "variable d1[1]");
+  CHECK(check(lines, true).status == 0);
+  lines[i]["vars"]["d1"] = Json::array({1, 2, 3, 4});
+  CHECK(check(lines).status == 2);  // a vector of 4 is malformed
+}

@@ -27,7 +27,9 @@ bool same_values(const TraceView& a, const TraceView& b, std::size_t s) {
   const StepRecord &x = a.at(s), &y = b.at(s);
   for (std::uint32_t k = 0; k < x.var_end - x.var_begin; ++k) {
     const VarRecord &u = a.var_at(x.var_begin + k), &v = b.var_at(y.var_begin + k);
-    if (!u.is_int && a.num_double(u.slot) != b.num_double(v.slot)) return false;
+    if (u.is_int || u.count != v.count) continue;
+    for (std::uint32_t c = 0; c < u.count; ++c)
+      if (a.num_double(u.slot + c) != b.num_double(v.slot + c)) return false;
   }
   return true;
 }

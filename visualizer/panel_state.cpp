@@ -21,7 +21,7 @@ ImVec4 var_colour(const VarState& v) {
 // The exact text, and for a fraction its decimal approximation too.
 void value_cell(const VarState& v) {
   ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
-  if (!v.is_int && v.text.find('/') != std::string::npos) {
+  if (!v.is_int && v.text.find('/') != std::string::npos && v.text.front() != '(') {  // vectors: no single decimal
     ImGui::SameLine();
     ImGui::TextDisabled("= %.9g", v.value);
   }

@@ -45,6 +45,8 @@ template <class Num> class JsonlProbe {
   }
   JsonlProbe& num(const char* name, const Num& v) { return add_var(name, json_value(v)); }
   JsonlProbe& idx(const char* name, std::int64_t v) { return add_var(name, std::to_string(v)); }
+  JsonlProbe& vec(const char* name, const Vec2<Num>& v) { return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ']'); }
+  JsonlProbe& vec(const char* name, const Vec3<Num>& v) { return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ',' + json_value(v.z) + ']'); }
   JsonlProbe& pixel(Pixel p) { return igeo(GeoKind::pixel, p.x, p.y); }
   JsonlProbe& span(std::int64_t j, std::int64_t i0, std::int64_t i1) { return igeo(GeoKind::span, j, i0, i1); }
   template <class... I> JsonlProbe& igeo(GeoKind kind, I... values) {

@@ -5,6 +5,7 @@
 //  - JsonlProbe<Num> (jsonl_probe.hpp): streams JSON lines; memory stays flat.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -31,6 +32,7 @@ struct VarRecord {
   const char* name;     // a string literal from the algorithm
   std::uint32_t slot;   // into the number or the integer store
   bool is_int;
+  std::uint8_t count;   // 1: a scalar; 2 or 3: a vector (or colour) of that many numbers
 };
 struct GeoRecord {
   GeoKind kind;
@@ -56,11 +58,16 @@ class TraceView {
   const VarRecord& var_at(std::uint32_t v) const { return vars_[v]; }
   const GeoRecord& geo_at(std::uint32_t g) const { return geos_[g]; }
   std::int64_t int_value(std::uint32_t slot) const { return ints_[slot]; }
+  // A scalar's value (a vector's first component), and the lossless text ("(x, y, z)" for vectors).
   double value_double(const VarRecord& v) const {
     return v.is_int ? static_cast<double>(ints_[v.slot]) : num_double(v.slot);
   }
   std::string value_text(const VarRecord& v) const {
-    return v.is_int ? std::to_string(ints_[v.slot]) : num_text(v.slot);
+    if (v.is_int) return std::to_string(ints_[v.slot]);
+    if (v.count == 1) return num_text(v.slot);
+    std::string t = "(";
+    for (std::uint32_t k = 0; k < v.count; ++k) t += (k ? ", " : "") + num_text(v.slot + k);
+    return t + ")";
   }
   // Coordinate k of a geometry item, as a double.
   double geo_double(const GeoRecord& g, int k) const {
@@ -117,17 +124,20 @@ template <class Num> class Recorder final : public TraceView {
   }
   void set_max_depth(int d) { max_depth_ = d; }
   Recorder& num(const char* name, const Num& v) {
-    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false});
+    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, 1});
     nums_.push_back(v);
     steps_.back().var_end++;
     return *this;
   }
   Recorder& idx(const char* name, std::int64_t v) {
-    vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true});
+    vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true, 1});
     ints_.push_back(v);
     steps_.back().var_end++;
     return *this;
   }
+  // A vector variable: its components under one name.
+  Recorder& vec(const char* name, const Vec2<Num>& v) { return components(name, {v.x, v.y}); }
+  Recorder& vec(const char* name, const Vec3<Num>& v) { return components(name, {v.x, v.y, v.z}); }
   Recorder& pixel(Pixel p) { return igeo(GeoKind::pixel, p.x, p.y); }
   // A run of pixels on row j from column i0 to i1 (both included).
   Recorder& span(std::int64_t j, std::int64_t i0, std::int64_t i1) { return igeo(GeoKind::span, j, i0, i1); }
@@ -150,6 +160,12 @@ template <class Num> class Recorder final : public TraceView {
   Recorder& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
   Recorder& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
 
+  Recorder& components(const char* name, std::initializer_list<Num> xs) {
+    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size())});
+    for (const Num& x : xs) nums_.push_back(x);
+    steps_.back().var_end++;
+    return *this;
+  }
   // An integer-valued geometry item (pixel, span).
   template <class... I> Recorder& igeo(GeoKind kind, I... values) {
     geos_.push_back({kind, sizeof...(I), static_cast<std::uint32_t>(ints_.size())});

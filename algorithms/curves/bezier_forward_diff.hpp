@@ -52,13 +52,12 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
     std::vector<Vec2<Num>> curve;  // the curve itself, for the canvas: 8 points per segment, at most 512
     const std::int64_t m = std::min<std::int64_t>(8 * b.n, 512);
     for (std::int64_t k = 0; k <= m; ++k) curve.push_back(bezier_at(b.p, Num(Num(k) / Num(m))));
-    probe.step(L::samples, StepKind::init).num("q0x", q[0].x).num("q0y", q[0].y).num("q1x", q[1].x).num("q1y", q[1].y)
-        .geo_list(GeoKind::polyline, curve);
+    probe.step(L::samples, StepKind::init).vec("q0", q[0]).vec("q1", q[1]).vec("q2", q[2]).vec("q3", q[3]).geo_list(GeoKind::polyline, curve);
   }
   const Vec2<Num> e0 = q[1] - q[0], e1 = q[2] - q[1], e2 = q[3] - q[2];
   Vec2<Num> d1 = e0, d2 = e1 - e0;
   const Vec2<Num> d3 = (e2 - e1) - d2;
-  if constexpr (Probe::on) probe.step(L::table, StepKind::init).num("d1x", d1.x).num("d1y", d1.y).num("d2x", d2.x).num("d2y", d2.y).num("d3x", d3.x).num("d3y", d3.y);
+  if constexpr (Probe::on) probe.step(L::table, StepKind::init).vec("d1", d1).vec("d2", d2).vec("d3", d3);
   Vec2<Num> p = q[0];
   for (std::int64_t k = 0; k < b.n; ++k) {  // bounded: n is validated
     const Vec2<Num> next = p + d1;
@@ -71,7 +70,7 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
     p = next;
     d1 = d1 + d2;
     d2 = d2 + d3;
-    if constexpr (Probe::on) probe.step(L::step, StepKind::advance).idx("k", k + 1).num("qx", p.x).num("qy", p.y).num("d1x", d1.x).num("d1y", d1.y).point(p);
+    if constexpr (Probe::on) probe.step(L::step, StepKind::advance).idx("k", k + 1).vec("q", p).vec("d1", d1).point(p);
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("k", b.n);
 }

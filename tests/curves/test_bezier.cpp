@@ -72,9 +72,15 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
       std::vector<Pixel> nested;  // pixels plotted by the nested dda-line of segment k
       std::size_t nested_steps = 0;
       auto values = [&](std::size_t s) {
+        // Scalars by name; a vector's components as name.x and name.y.
         std::map<std::string, Rational> v;
-        for (std::uint32_t x = t.at(s).var_begin; x < t.at(s).var_end; ++x)
-          v[t.var_at(x).name] = t.var_at(x).is_int ? Rational(t.int_value(t.var_at(x).slot)) : t.num_value(t.var_at(x).slot);
+        for (std::uint32_t x = t.at(s).var_begin; x < t.at(s).var_end; ++x) {
+          const VarRecord& var = t.var_at(x);
+          if (var.is_int) v[var.name] = Rational(t.int_value(var.slot));
+          else if (var.count == 1) v[var.name] = t.num_value(var.slot);
+          else
+            for (std::uint32_t c = 0; c < var.count; ++c) v[std::string(var.name) + "." + "xyz"[c]] = t.num_value(var.slot + c);
+        }
         return v;
       };
       for (std::size_t s = 0; s < t.size(); ++s) {
@@ -92,11 +98,11 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
         auto v = values(s);
         std::set<std::string> expected;
         if (line == "samples") {
-          expected = {"q0x", "q0y", "q1x", "q1y"};
-          CHECK(v["q0x"] == B(0, n).x);
-          CHECK(v["q0y"] == B(0, n).y);
-          CHECK(v["q1x"] == B(1, n).x);
-          CHECK(v["q1y"] == B(1, n).y);
+          expected = {"q0.x", "q0.y", "q1.x", "q1.y", "q2.x", "q2.y", "q3.x", "q3.y"};
+          for (int j = 0; j < 4; ++j) {
+            CHECK(v["q" + std::to_string(j) + ".x"] == B(j, n).x);
+            CHECK(v["q" + std::to_string(j) + ".y"] == B(j, n).y);
+          }
           REQUIRE(st.geo_end - st.geo_begin == 1);
           const GeoRecord& g = t.geo_at(st.geo_begin);
           REQUIRE(g.kind == GeoKind::polyline);
@@ -107,14 +113,14 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
             CHECK(t.num_value(g.slot + 2 * j + 1) == B(j, m).y);
           }
         } else if (line == "table") {
-          expected = {"d1x", "d1y", "d2x", "d2y", "d3x", "d3y"};
+          expected = {"d1.x", "d1.y", "d2.x", "d2.y", "d3.x", "d3.y"};
           const auto d1 = B(1, n) - B(0, n), d2 = (B(2, n) - B(1, n)) - d1, d3 = (B(3, n) - B(2, n)) - (B(2, n) - B(1, n)) - d2;
-          CHECK(v["d1x"] == d1.x);
-          CHECK(v["d1y"] == d1.y);
-          CHECK(v["d2x"] == d2.x);
-          CHECK(v["d2y"] == d2.y);
-          CHECK(v["d3x"] == d3.x);
-          CHECK(v["d3y"] == d3.y);
+          CHECK(v["d1.x"] == d1.x);
+          CHECK(v["d1.y"] == d1.y);
+          CHECK(v["d2.x"] == d2.x);
+          CHECK(v["d2.y"] == d2.y);
+          CHECK(v["d3.x"] == d3.x);
+          CHECK(v["d3.y"] == d3.y);
         } else if (line == "segment") {
           expected = {"k"};
           CHECK(v["k"] == k);
@@ -128,17 +134,17 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
           nested.clear();
           nested_steps = 0;
         } else if (line == "step") {
-          expected = {"k", "qx", "qy", "d1x", "d1y"};
+          expected = {"k", "q.x", "q.y", "d1.x", "d1.y"};
           // The nested call drew exactly the DDA specification of segment k (or nothing when summarised).
           CHECK(nested == (depth > 0 ? oracle::column_pixels(B(k, n), B(k + 1, n), oracle::Sampling::ascending) : std::vector<Pixel>{}));
           if (depth == 0) CHECK(nested_steps == 0);
           else CHECK(nested_steps > 0);
           ++k;
           CHECK(v["k"] == k);
-          CHECK(v["qx"] == B(k, n).x);
-          CHECK(v["qy"] == B(k, n).y);
-          CHECK(v["d1x"] == B(k + 1, n).x - B(k, n).x);
-          CHECK(v["d1y"] == B(k + 1, n).y - B(k, n).y);
+          CHECK(v["q.x"] == B(k, n).x);
+          CHECK(v["q.y"] == B(k, n).y);
+          CHECK(v["d1.x"] == B(k + 1, n).x - B(k, n).x);
+          CHECK(v["d1.y"] == B(k + 1, n).y - B(k, n).y);
           REQUIRE(st.geo_end - st.geo_begin == 1);
           CHECK(t.geo_at(st.geo_begin).kind == GeoKind::point2);
           CHECK(t.num_value(t.geo_at(st.geo_begin).slot) == B(k, n).x);
