@@ -95,7 +95,10 @@ template <class Num> class Recorder final : public TraceView {
   std::string num_text(std::uint32_t s) const override { return num::to_text(nums_[s]); }
   const Num& num_value(std::uint32_t s) const { return nums_[s]; }
 
-  Recorder& step(std::uint32_t line, StepKind kind) {
+  // The recording calls are flattened: since the recorder has two push_back sites per vector
+  // (here and the summarising scratch), GCC stopped inlining push_back, and recording went from
+  // 19 to 25 ns per step (bench_probe, same run).
+  [[gnu::flatten]] Recorder& step(std::uint32_t line, StepKind kind) {
     if (depth_ > max_depth_) [[unlikely]]
       return discarded(line, kind);
     auto nv = static_cast<std::uint32_t>(vars_.size()), ng = static_cast<std::uint32_t>(geos_.size());
@@ -123,13 +126,13 @@ template <class Num> class Recorder final : public TraceView {
     scope_ = stack_.empty() ? 0 : stack_.back();
   }
   void set_max_depth(int d) { max_depth_ = d; }
-  Recorder& num(const char* name, const Num& v) {
+  [[gnu::flatten]] Recorder& num(const char* name, const Num& v) {
     vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, 1});
     nums_.push_back(v);
     steps_.back().var_end++;
     return *this;
   }
-  Recorder& idx(const char* name, std::int64_t v) {
+  [[gnu::flatten]] Recorder& idx(const char* name, std::int64_t v) {
     vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true, 1});
     ints_.push_back(v);
     steps_.back().var_end++;
