@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <unistd.h>
 #include "headless.hpp"
 #include "pixel_layer.hpp"
@@ -74,6 +75,33 @@ TEST_CASE("visualizer render: plotted pixels and the listing line at known steps
     CHECK(app.highlighted_line() == m.trace().at(step).line);
     check_canvas(host, m, step);
   }
+}
+
+TEST_CASE("visualizer render: the drawn highlight band is on the step's listing line and no other", "[visualizer][render]") {
+  HeadlessHost host(kW, kH);
+  App& app = host.app();
+  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"), Numeric::exact));
+  const TraceModel& m = *app.model(0);
+  auto blue = [](std::uint32_t c) { return int((c >> 16) & 255) - int(c & 255); };  // RGBA in memory: blue minus red
+  std::set<std::uint32_t> lines_seen;
+  for (std::size_t step = 0; step <= m.last(); ++step) {
+    app.set_step(step);
+    host.render();
+    host.render();  // the listing scrolls to the line on the frame after
+    const std::uint32_t line = m.trace().at(step).line;
+    const auto& rows = app.listing_rows();
+    REQUIRE(rows.size() == find_algorithm("dda-line").listing.lines.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const int x = int(std::lround(rows[i][0] - 2)), y = int(std::lround(rows[i][1] + 2));
+      if (y < 0 || y >= host.height()) continue;
+      INFO("step " << step << " line " << line << " row " << i + 1);
+      // The band is the highlight blue over the panel; every other row shows the panel's grey.
+      if (i + 1 == line) CHECK(blue(host.pixel(x, y)) >= 40);
+      else CHECK(std::abs(blue(host.pixel(x, y))) < 20);
+    }
+    lines_seen.insert(line);
+  }
+  CHECK(lines_seen.size() >= 8);  // the band visited most lines of the listing
 }
 
 TEST_CASE("visualizer render: the grid walk's corner case and the compare view", "[visualizer][render]") {

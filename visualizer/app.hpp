@@ -43,6 +43,8 @@ class App {
 
   // Test hooks: what the last frame showed.
   std::uint32_t highlighted_line() const { return highlighted_line_; }
+  // Test hook: the screen rows of the listing as last drawn: left x, top y, bottom y per line.
+  const std::vector<std::array<float, 3>>& listing_rows() const { return listing_rows_; }
   const Canvas* canvas(int i) const { return canvases_[i].get(); }
   const TraceModel* model(int i) const { return (i == 0 ? a_ : b_).get(); }
   const std::optional<CompareStats>& compare_stats() const { return stats_; }
@@ -95,6 +97,7 @@ class App {
   std::vector<std::array<std::string, 2>> handle_text_;  // the declared 2D handles' x and y, as typed
   std::string json_text_;
   std::uint32_t highlighted_line_ = 0;
+  std::vector<std::array<float, 3>> listing_rows_;
   std::size_t listing_scrolled_to_ = ~std::size_t(0);
   float listing_content_h_ = 300;  // the listing's full height, measured each frame
 };

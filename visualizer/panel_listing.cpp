@@ -16,6 +16,7 @@ void App::draw_listing(ImVec2 pos, ImVec2 size) {
   title += "###Listing";
   ImGui::Begin(title.c_str(), nullptr, kPanelFlags);
   highlighted_line_ = 0;
+  listing_rows_.clear();
   if (!alg_ || !a_) {
     ImGui::End();
     return;
@@ -66,6 +67,7 @@ void App::draw_listing(ImVec2 pos, ImVec2 size) {
       ImGui::PopStyleColor();
     }
     const float bottom = ImGui::GetCursorScreenPos().y;
+    listing_rows_.push_back({top.x, top.y, bottom});
     dl->ChannelsSetCurrent(0);
     if (current) {
       dl->AddRectFilled(ImVec2(top.x - 4, top.y - 2), ImVec2(top.x + ImGui::GetContentRegionAvail().x + 4, bottom - 2), theme::kLineHighlight, 2);
