@@ -37,7 +37,6 @@ enum class View : std::uint8_t {
   plane2d,  // pixels and 2D geometry over a grid
   orbit3d,  // 3D geometry under an orbit camera
 };
-constexpr std::string_view view_name(View v) { return v == View::plane2d ? "plane2d" : "orbit3d"; }
 
 // An input value the user may drag or type on a view: a JSON pointer into the input, what it is,
 // and the grid it snaps to (1/snap; an integer input snaps to 1).

@@ -39,9 +39,14 @@ void write_trace(const Algorithm& alg, Numeric n, const Json& input, std::ostrea
 // line. Throws InputError("line K: ...") before writing anything if any input is bad.
 std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& inputs, std::ostream& out);
 
-// `stepwise check`: replays a trace against the exact reference run (steps) and the oracle
-// (result). decisions_only compares lines, kinds, integer variables and pixels, not numbers
-// (for float and filtered traces whose numbers are rounded by design).
+// How closely `check` holds the numbers of a trace in mode n to the replay's, relative to
+// 1 + |expected| (docs/trace-format.md): exact and int 0, float 2^-10, double and filtered 2^-36,
+// reference 2^-200.
+Rational mode_tolerance(Numeric n);
+
+// `stepwise check` (check.cpp): replays a trace in exact (or reference) mode step by step, holding
+// its numbers to mode_tolerance, and its result against the oracle. decisions_only compares
+// lines, kinds, integer variables and decision geometry, not numbers.
 struct CheckReport {
   int status = 0;  // 0 agree, 1 diverge, 2 malformed
   std::string message;

@@ -1,6 +1,7 @@
 // Runs the `stepwise` binary for the CLI tests: exit code, stdout and stderr.
 #pragma once
 #include <sys/wait.h>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -48,5 +49,19 @@ inline Ran run_stepwise(const std::string& args, const std::string& exe = SW_STE
   std::filesystem::remove_all(dir);
   return r;
 }
+
+// `stepwise trace ALG --numeric N --input INPUT --out FILE` must refuse the input: exit 2, one line
+// on stderr containing `expect`, and no output file. Catch2 checks; call inside a TEST_CASE.
+#define SW_CHECK_BAD_TRACE(alg, numeric, input, expect)                                                                       \
+  do {                                                                                                                        \
+    const auto sw_dir_ = ::sw::testing::scratch("bad-trace");                                                                 \
+    const auto sw_out_ = sw_dir_ / "t.jsonl";                                                                                 \
+    const auto sw_ran_ = ::sw::testing::run_stepwise(std::string("trace ") + (alg) + " --numeric " + (numeric) + " --input " + \
+                                                     ::sw::testing::sh_quote(input) + " --out " + ::sw::testing::sh_quote(sw_out_.string())); \
+    CHECK(sw_ran_.status == 2);                                                                                               \
+    CHECK_THAT(sw_ran_.err, Catch::Contains(expect));                                                                         \
+    CHECK(std::count(sw_ran_.err.begin(), sw_ran_.err.end(), '\n') == 1);                                                    \
+    CHECK(!std::filesystem::exists(sw_out_));                                                                                 \
+  } while (false)
 
 }  // namespace sw::testing

@@ -9,6 +9,10 @@
 
 namespace sw::testing {
 
+// a / b in lowest terms (gmpxx leaves mpq_class(a, b) as given, and its arithmetic needs canonical
+// operands).
+inline Rational ratio(std::int64_t a, std::int64_t b) { return Rational(a) / Rational(b); }
+
 struct StepValues {
   std::map<std::string, Rational> v;
   std::set<std::string> checked;

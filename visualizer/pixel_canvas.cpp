@@ -101,7 +101,8 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
       cx_ = (*at)[0], cy_ = (*at)[1];
   }
   const ImGuiIO& io = ImGui::GetIO();
-  const auto handles = in.model ? handle_points(*in.model) : std::vector<std::optional<std::array<double, 2>>>{};
+  static const std::vector<std::optional<std::array<double, 2>>> kNone;
+  const auto& handles = in.model ? in.model->handle_points() : kNone;
 
   // A press on a declared handle drags it; anywhere else it pans.
   if (ImGui::IsItemActivated()) {
@@ -210,21 +211,6 @@ void PixelCanvas::draw_grid(ImDrawList* dl) const {
   }
 }
 
-// Where each declared 2D handle is, read from the input (nothing for other kinds or when absent).
-std::vector<std::optional<std::array<double, 2>>> PixelCanvas::handle_points(const TraceModel& m) {
-  std::vector<std::optional<std::array<double, 2>>> out;
-  for (const Handle& h : m.algorithm().handles) {
-    out.emplace_back();
-    if (h.kind != Handle::Kind::point2) continue;
-    try {
-      const Json& v = m.input().at(Json::json_pointer(h.pointer));
-      if (v.is_array() && v.size() == 2) out.back() = std::array<double, 2>{parse_rational(v[0], h.label).get_d(), parse_rational(v[1], h.label).get_d()};
-    } catch (const std::exception&) {
-    }
-  }
-  return out;
-}
-
 void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
   const TraceModel& m = *in.model;
   if (auto px = m.pixel_at(in.step)) {
@@ -249,7 +235,7 @@ void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
     dl->AddLine(a, b, scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment, scale_ < 4 ? 1.f : 2.f);
   }
   // The inputs the algorithm declares as handles, where the input holds them.
-  const auto handles = handle_points(m);
+  const auto& handles = m.handle_points();
   const auto& decl = m.algorithm().handles;
   for (std::size_t h = 0; h < handles.size(); ++h) {
     if (!handles[h]) continue;

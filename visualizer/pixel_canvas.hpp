@@ -28,7 +28,6 @@ class PixelCanvas final : public Canvas {
   ImVec2 origin_{0, 0}, size_{1, 1};
   bool fit_pending_ = true;
   int dragging_ = -1;  // the declared handle being dragged (its index)
-  static std::vector<std::optional<std::array<double, 2>>> handle_points(const TraceModel& m);
   bool moved_ = false;
 };
 

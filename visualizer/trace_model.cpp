@@ -15,14 +15,17 @@ void WorldRect::add(double x, double y) {
 TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Recorded rec)
     : alg_(&alg), input_(std::move(input)), numeric_(numeric), rec_(std::move(rec)) {
   bounds_ = {1, 1, 0, 0};  // empty
-  // The declared 2D handles (control points may lie off the curve) are framed too.
+  // Where the declared 2D handles are, read from the input once; they are framed too (control
+  // points may lie off the curve).
   for (const Handle& h : alg.handles) {
+    handles_.emplace_back();
     if (h.kind != Handle::Kind::point2) continue;
     try {
       const Json& v = input_.at(Json::json_pointer(h.pointer));
-      if (v.is_array() && v.size() == 2) bounds_.add(parse_rational(v[0], h.label).get_d(), parse_rational(v[1], h.label).get_d());
+      if (v.is_array() && v.size() == 2) handles_.back() = std::array<double, 2>{parse_rational(v[0], h.label).get_d(), parse_rational(v[1], h.label).get_d()};
     } catch (const std::exception&) {
     }
+    if (handles_.back()) bounds_.add((*handles_.back())[0], (*handles_.back())[1]);
   }
   const TraceView& t = *rec_.trace;
   const std::size_t n = t.size();

@@ -64,6 +64,9 @@ class TraceModel {
     std::vector<double> values;
   };
   static constexpr std::size_t kMaxShapes = 64;
+  // Each declared handle's position (Algorithm::handles, same order); nothing for other kinds
+  // than point2 or when the input does not hold it.
+  const std::vector<std::optional<std::array<double, 2>>>& handle_points() const { return handles_; }
   const std::vector<Shape2D>& shapes() const { return shapes_; }
   // The latest 2D point at or before `step` (the q of a DDA), searching back a bounded way.
   std::optional<std::array<double, 2>> point_at(std::size_t step) const;
@@ -90,6 +93,7 @@ class TraceModel {
   WorldRect bounds_;
   std::optional<std::array<double, 4>> segment_;
   std::vector<Shape2D> shapes_;
+  std::vector<std::optional<std::array<double, 2>>> handles_;
   std::vector<std::string_view> names_;
   std::vector<std::uint8_t> name_of_var_;        // var record -> index into names_
   std::vector<std::uint32_t> checkpoints_;       // names_.size() entries per checkpoint

@@ -6,6 +6,7 @@
 //    in 300-bit MPFR rounded to a rational. That is reference mode's meaning of sqrt, sin, cos,
 //    tan and atan2; exact mode uses only root, and reports whether it was exact.
 #pragma once
+#include <array>
 #include <cmath>
 #include <type_traits>
 #include <mpfr.h>
@@ -118,14 +119,11 @@ template <class Num> int max_axis(const Vec3<Num>& v) {
   }
 }
 
-// a b - c d, written once so that a number type may evaluate it more accurately (it is the core
-// of every 2D orientation and cross product).
-template <class Num> Num difference_of_products(const Num& a, const Num& b, const Num& c, const Num& d) { return Num(a * b - c * d); }
-
-// sum c[k] x^k for k = 0..N-1 by Horner's rule (c[N-1] the leading coefficient).
+// c[0] x^(N-1) + c[1] x^(N-2) + ... + c[N-1] by Horner's rule (leading coefficient first, as
+// polynomials are written).
 template <class Num, std::size_t N> Num polynomial(const std::array<Num, N>& c, const Num& x) {
-  Num y = c[N - 1];
-  for (std::size_t k = N - 1; k-- > 0;) y = Num(y * x + c[k]);
+  Num y = c[0];
+  for (std::size_t k = 1; k < N; ++k) y = Num(y * x + c[k]);
   return y;
 }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string_view>
 #include <vector>
+#include "core/functions.hpp"
 #include "core/number.hpp"
 #include "core/probe.hpp"
 #include "core/vec.hpp"
@@ -21,12 +22,6 @@ template <class Num> struct Cubic {
   std::int64_t xs = 0, xe = 0;
 };
 
-// P(x) by Horner's rule in Num.
-template <class Num> Num horner(const std::array<Num, 4>& c, const Num& x) {
-  Num y = c[0];
-  for (int k = 1; k < 4; ++k) y = Num(y * x + c[k]);
-  return y;
-}
 
 // Points on the curve for the canvas: n + 1 samples from xs to xe, n = 8 per column, at most 512.
 template <class Num> std::vector<Vec2<Num>> curve_samples(const Cubic<Num>& p) {
@@ -34,7 +29,7 @@ template <class Num> std::vector<Vec2<Num>> curve_samples(const Cubic<Num>& p) {
   std::vector<Vec2<Num>> pts;
   for (std::int64_t k = 0; k <= n; ++k) {
     const Num x = Num(Num(p.xs) + Num(Num(p.xe - p.xs) * Num(k)) / Num(n));
-    pts.push_back({x, horner(p.c, x)});
+    pts.push_back({x, num::polynomial(p.c, x)});
   }
   return pts;
 }
@@ -58,7 +53,7 @@ template <class Num, class Probe = NoProbe>
 void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   using L = PolyForwardDiff;
   std::array<Num, 4> y;
-  for (int k = 0; k < 4; ++k) y[k] = horner(p.c, Num(Num(p.xs) + Num(k)));
+  for (int k = 0; k < 4; ++k) y[k] = num::polynomial(p.c, Num(Num(p.xs) + Num(k)));
   if constexpr (Probe::on)
     probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]).geo_list(GeoKind::polyline, curve_samples(p));
   const Num e0 = Num(y[1] - y[0]), e1 = Num(y[2] - y[1]), e2 = Num(y[3] - y[2]);

@@ -21,7 +21,7 @@ template <class Num, class Probe = NoProbe>
 void poly_horner(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   using L = PolyHorner;
   for (std::int64_t x = p.xs; x < p.xe; ++x) {  // bounded: xe - xs is validated
-    const Num y = horner(p.c, Num(x));
+    const Num y = num::polynomial(p.c, Num(x));
     if constexpr (Probe::on) {
       auto& st = probe.step(L::eval, StepKind::advance).idx("x", x).num("y", y);
       if (x == p.xs) st.geo_list(GeoKind::polyline, curve_samples(p));  // the exact curve, once

@@ -10,6 +10,7 @@
 #include "curves/bezier_forward_diff.hpp"
 #include "curves_bezier_oracle.hpp"
 #include "lines_oracle.hpp"
+#include "step_values.hpp"
 #include "trace_io.hpp"
 
 using namespace sw;
@@ -26,11 +27,7 @@ template <class Num> std::vector<Pixel> run(const std::array<Vec2<Rational>, 4>&
   return out;
 }
 
-Rational q(long a, long b) {
-  Rational r(a, b);
-  r.canonicalize();
-  return r;
-}
+using testing::ratio;
 
 }  // namespace
 
@@ -40,7 +37,7 @@ TEST_CASE("curves bezier: exact and filtered equal the oracle on 10^4 random cur
   std::size_t uncertain = 0;
   for (int i = 0; i < 10000; ++i) {
     std::array<Vec2<Rational>, 4> p;
-    for (auto& c : p) c = {q(u(-400, 400), 8), q(u(-400, 400), 8)};
+    for (auto& c : p) c = {ratio(u(-400, 400), 8), ratio(u(-400, 400), 8)};
     const std::int64_t n = u(1, 12);
     const auto want = oracle::bezier_pixels(p, n);
     if (i % 4 == 0) REQUIRE(run<Rational>(p, n) == want);
@@ -56,8 +53,8 @@ TEST_CASE("curves bezier: exact and filtered equal the oracle on 10^4 random cur
 }
 
 TEST_CASE("curves bezier: every value of its own steps matches its closed form and dda-line runs nested", "[curves][bezier]") {
-  const std::array<Vec2<Rational>, 4> p = {Vec2<Rational>{q(1, 2), 0}, {3, q(29, 4)}, {q(19, 2), q(-5, 3)}, {12, 6}};
-  auto B = [&](std::int64_t k, std::int64_t n) { return oracle::bezier_point(p, q(k, n)); };
+  const std::array<Vec2<Rational>, 4> p = {Vec2<Rational>{ratio(1, 2), 0}, {3, ratio(29, 4)}, {ratio(19, 2), ratio(-5, 3)}, {12, 6}};
+  auto B = [&](std::int64_t k, std::int64_t n) { return oracle::bezier_point(p, ratio(k, n)); };
   for (std::int64_t n : {1, 3, 7}) {
     for (int depth : {8, 0}) {
       INFO("n = " << n << ", max depth " << depth);
@@ -71,18 +68,6 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
       std::int64_t k = 0;
       std::vector<Pixel> nested;  // pixels plotted by the nested dda-line of segment k
       std::size_t nested_steps = 0;
-      auto values = [&](std::size_t s) {
-        // Scalars by name; a vector's components as name.x and name.y.
-        std::map<std::string, Rational> v;
-        for (std::uint32_t x = t.at(s).var_begin; x < t.at(s).var_end; ++x) {
-          const VarRecord& var = t.var_at(x);
-          if (var.is_int) v[var.name] = Rational(t.int_value(var.slot));
-          else if (var.count == 1) v[var.name] = t.num_value(var.slot);
-          else
-            for (std::uint32_t c = 0; c < var.count; ++c) v[std::string(var.name) + "." + "xyz"[c]] = t.num_value(var.slot + c);
-        }
-        return v;
-      };
       for (std::size_t s = 0; s < t.size(); ++s) {
         const StepRecord& st = t.at(s);
         if (st.scope) {
@@ -95,10 +80,8 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
         }
         const std::string_view line = L.lines[st.line - 1].name;
         INFO("step " << s << " line " << line);
-        auto v = values(s);
-        std::set<std::string> expected;
+        testing::StepValues v = testing::values_of(t, s);
         if (line == "samples") {
-          expected = {"q0.x", "q0.y", "q1.x", "q1.y", "q2.x", "q2.y", "q3.x", "q3.y"};
           for (int j = 0; j < 4; ++j) {
             CHECK(v["q" + std::to_string(j) + ".x"] == B(j, n).x);
             CHECK(v["q" + std::to_string(j) + ".y"] == B(j, n).y);
@@ -113,7 +96,6 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
             CHECK(t.num_value(g.slot + 2 * j + 1) == B(j, m).y);
           }
         } else if (line == "table") {
-          expected = {"d1.x", "d1.y", "d2.x", "d2.y", "d3.x", "d3.y"};
           const auto d1 = B(1, n) - B(0, n), d2 = (B(2, n) - B(1, n)) - d1, d3 = (B(3, n) - B(2, n)) - (B(2, n) - B(1, n)) - d2;
           CHECK(v["d1.x"] == d1.x);
           CHECK(v["d1.y"] == d1.y);
@@ -122,7 +104,6 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
           CHECK(v["d3.x"] == d3.x);
           CHECK(v["d3.y"] == d3.y);
         } else if (line == "segment") {
-          expected = {"k"};
           CHECK(v["k"] == k);
           REQUIRE(st.geo_end - st.geo_begin == 1);
           const GeoRecord& g = t.geo_at(st.geo_begin);
@@ -134,7 +115,6 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
           nested.clear();
           nested_steps = 0;
         } else if (line == "step") {
-          expected = {"k", "q.x", "q.y", "d1.x", "d1.y"};
           // The nested call drew exactly the DDA specification of segment k (or nothing when summarised).
           CHECK(nested == (depth > 0 ? oracle::column_pixels(B(k, n), B(k + 1, n), oracle::Sampling::ascending) : std::vector<Pixel>{}));
           if (depth == 0) CHECK(nested_steps == 0);
@@ -150,15 +130,11 @@ TEST_CASE("curves bezier: every value of its own steps matches its closed form a
           CHECK(t.num_value(t.geo_at(st.geo_begin).slot) == B(k, n).x);
           CHECK(t.num_value(t.geo_at(st.geo_begin).slot + 1) == B(k, n).y);
         } else if (line == "done") {
-          expected = {"k"};
           CHECK(v["k"] == n);
         } else {
           FAIL("no expectation for line " << line);
         }
-        for (const auto& [name, value] : v) {
-          INFO("recorded " << name);
-          CHECK(expected.count(name));
-        }
+        testing::require_all_checked(v, s);
       }
       CHECK(k == n);
     }

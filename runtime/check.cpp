@@ -1,0 +1,281 @@
+// `stepwise check`: replays a trace in exact (or reference) mode and compares it step by step and
+// field by field, then its result with the oracle. Format and rules: docs/trace-format.md.
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include "trace_io.hpp"
+
+namespace sw {
+
+namespace {
+
+// How closely a trace's numbers must match the replay's. Integers (indices, flags) and decision
+// geometry (pixels, spans) always match exactly; numbers within rel * (1 + |expected|).
+struct Tolerance {
+  Rational rel;         // 0: exactly
+  bool numbers = true;  // false: --decisions-only, numbers are not compared
+};
+
+// Nesting depth of a JSON value, without recursion: readers and printers below recurse at most
+// this deep, so a trace nested 10^5 levels is refused before anything recurses into it.
+constexpr std::size_t kMaxNesting = 64;
+std::size_t nesting(const Json& root) {
+  std::vector<std::pair<const Json*, std::size_t>> todo{{&root, 1}};
+  std::size_t deepest = 0;
+  while (!todo.empty()) {
+    const auto [j, d] = todo.back();
+    todo.pop_back();
+    deepest = std::max(deepest, d);
+    if (d > kMaxNesting) return d;
+    if (j->is_structured())
+      for (const Json& c : *j) todo.push_back({&c, d + 1});
+  }
+  return deepest;
+}
+
+// A value for a person: the text, and for rationals that are not integers "~ decimal" beside it.
+std::string show(const Json& v) {
+  std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  if (text.size() > 80) text = text.substr(0, 77) + "...";
+  try {
+    const Rational q = parse_rational(v, "");
+    if (q.get_den() != 1 || v.is_string()) {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "%.9g", q.get_d());
+      if (text != buf) text += std::string(" (~ ") + buf + ")";
+    }
+  } catch (const InputError&) {
+  }
+  return text;
+}
+
+// Compares the replay's value `want` with the trace's `got`; says what differs, or nothing. `exact`
+// forces an exact comparison of numbers (integers, decision geometry).
+std::optional<std::string> value_diff(const Json& want, const Json& got, const Tolerance& tol, bool exact, const std::string& path, std::size_t depth = 0) {
+  auto differ = [&](const std::string& why) { return std::optional<std::string>(path + ": " + why); };
+  if (depth > kMaxNesting) return differ("nested too deeply");
+  const bool wn = want.is_number() || want.is_string(), gn = got.is_number() || got.is_string();
+  if (wn && gn) {
+    if (!exact && !tol.numbers && !want.is_number_integer()) return std::nullopt;  // --decisions-only
+    Rational w, g;
+    try {
+      w = parse_rational(want, path), g = parse_rational(got, path);
+    } catch (const InputError&) {
+      return want == got ? std::nullopt : differ("expected " + show(want) + ", got " + show(got));
+    }
+    if (w == g || (!exact && !want.is_number_integer() && tol.rel > 0 && abs(Rational(g - w)) <= tol.rel * (1 + abs(w)))) return std::nullopt;
+    std::string why = "expected " + show(want) + ", got " + show(got);
+    if (!exact && tol.rel > 0) why += " (beyond the tolerance " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))";
+    return differ(why);
+  }
+  if (want.is_array() && got.is_array()) {
+    if (want.size() != got.size()) return differ("expected " + std::to_string(want.size()) + " entries, got " + std::to_string(got.size()));
+    for (std::size_t i = 0; i < want.size(); ++i)
+      if (auto d = value_diff(want[i], got[i], tol, exact, path + "[" + std::to_string(i) + "]", depth + 1)) return d;
+    return std::nullopt;
+  }
+  if (want.is_object() && got.is_object()) {
+    for (auto it = want.begin(); it != want.end(); ++it) {
+      if (it.key() == "fallback") continue;  // informational
+      if (!got.contains(it.key())) return differ("missing \"" + it.key() + "\"");
+      if (auto d = value_diff(*it, got[it.key()], tol, exact, path + "." + it.key(), depth + 1)) return d;
+    }
+    for (auto it = got.begin(); it != got.end(); ++it)
+      if (it.key() != "fallback" && !want.contains(it.key())) return differ("unexpected \"" + it.key() + "\"");
+    return std::nullopt;
+  }
+  return want == got ? std::nullopt : differ("expected " + show(want) + ", got " + show(got));
+}
+
+// Calls back once per line written to it: `check` watches the exact run's JSONL as it is made.
+class LineSink : public std::streambuf {
+ public:
+  explicit LineSink(std::function<void(const std::string&)> on_line) : on_line_(std::move(on_line)) {}
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (c != traits_type::eof()) put(static_cast<char>(c));
+    return c;
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    for (std::streamsize i = 0; i < n; ++i) put(s[i]);
+    return n;
+  }
+
+ private:
+  void put(char c) {
+    if (c != '\n') return line_.push_back(c);
+    on_line_(line_);
+    line_.clear();
+  }
+  std::function<void(const std::string&)> on_line_;
+  std::string line_;
+};
+
+// Thrown through the exact run to stop it at the first divergence.
+struct Diverged {
+  std::string message;
+};
+
+// What differs between the replay's step and the trace's, or nothing. Names the field.
+std::optional<std::string> step_diff(const Json& want, const Json& got, const Tolerance& tol, const Listing& listing) {
+  // Steps inside a nested call name the callee ("in") and count lines in its listing.
+  const std::string want_in = want.value("in", ""), got_in = got.contains("in") && got["in"].is_string() ? got["in"].get<std::string>() : "";
+  if (want_in != got_in)
+    return "listing: expected a step of " + (want_in.empty() ? std::string("the algorithm itself") : want_in) + ", got one of " + (got_in.empty() ? std::string("the algorithm itself") : got_in);
+  const Listing& lst = want_in.empty() ? listing : find_algorithm(want_in).listing;
+  auto line_name = [&](const Json& l) {
+    const auto id = l.get<std::int64_t>();
+    return l.dump() + (id >= 1 && id <= static_cast<std::int64_t>(lst.lines.size()) ? " (" + std::string(lst.lines[id - 1].name) + ")" : "");
+  };
+  if (got.at("line") != want.at("line")) return "line: expected " + line_name(want.at("line")) + ", got " + line_name(got.at("line"));
+  if (got.at("kind") != want.at("kind")) return "kind: expected " + want.at("kind").dump() + ", got " + got.at("kind").dump();
+  const Json& wv = want.at("vars");
+  const Json& gv = got.at("vars");
+  for (auto it = wv.begin(); it != wv.end(); ++it) {
+    if (!gv.contains(it.key())) return "variable " + it.key() + ": missing";
+    const bool is_int = it->is_number_integer();  // the replay writes integers bare, numbers as strings
+    if (!tol.numbers && !is_int) continue;
+    if (auto d = value_diff(*it, gv[it.key()], tol, is_int, "variable " + it.key())) return d;
+  }
+  for (auto it = gv.begin(); it != gv.end(); ++it)
+    if (!wv.contains(it.key())) return "variable " + it.key() + ": not recorded by the algorithm at this step";
+  const Json& wg = want.at("geo");
+  const Json& gg = got.at("geo");
+  if (wg.size() != gg.size()) return "geo: expected " + std::to_string(wg.size()) + " items, got " + std::to_string(gg.size());
+  for (std::size_t k = 0; k < wg.size(); ++k) {
+    const auto first = wg[k].begin();  // each geometry item is a one-key object
+    const std::string name = first.key();
+    const std::string path = "geo[" + std::to_string(k) + "]." + name;
+    if (!gg[k].is_object() || gg[k].size() != 1 || !gg[k].contains(name)) return path + ": expected a \"" + name + "\" item, got " + show(gg[k]);
+    const auto kind = parse_geo(name);
+    const bool decision = kind && geo_desc(*kind).decision;  // the vocabulary's rule
+    if (!tol.numbers && !decision) continue;
+    if (auto d = value_diff(first.value(), gg[k][name], tol, decision, path)) return d;
+  }
+  return std::nullopt;
+}
+
+void require_step_shape(const Json& j, std::size_t lineno) {
+  auto bad = [&](const char* why) { throw InputError("line " + std::to_string(lineno) + ": " + why); };
+  if (!j.is_object()) bad("expected a step object");
+  if (!j.contains("line") || !j["line"].is_number_integer()) bad("step without an integer \"line\"");
+  if (!j.contains("kind") || !j["kind"].is_string()) bad("step without a string \"kind\"");
+  if (!j.contains("vars") || !j["vars"].is_object()) bad("step without a \"vars\" object");
+  if (!j.contains("geo") || !j["geo"].is_array()) bad("step without a \"geo\" array");
+  // A variable is a number, a "p/q" string, or a vector of 2 or 3 of them.
+  auto number = [&](const Json& v, const std::string& what) {
+    if (!v.is_number() && !v.is_string()) bad("a variable that is neither a number, a \"p/q\" string nor a vector of them");
+    if (v.is_string()) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what);
+  };
+  for (auto it = j["vars"].begin(); it != j["vars"].end(); ++it) {
+    if (!it->is_array()) {
+      number(*it, "vars." + it.key());
+      continue;
+    }
+    if (it->size() < 2 || it->size() > 3) bad("a vector variable of other than 2 or 3 components");
+    for (const Json& c : *it) number(c, "vars." + it.key());
+  }
+}
+
+}  // namespace
+
+CheckReport check_trace(std::istream& in, bool decisions_only) {
+  CheckReport rep;
+  std::string line;
+  std::size_t lineno = 0;
+  // The next non-blank line's text (in `line`), or false at the end.
+  auto next_text = [&]() -> bool {
+    while (std::getline(in, line)) {
+      ++lineno;
+      if (line.find_first_not_of(" \t\r") != std::string::npos) return true;
+    }
+    return false;
+  };
+  auto next_line = [&]() -> std::optional<Json> {
+    if (!next_text()) return std::nullopt;
+    return parse_json_text(line, "line " + std::to_string(lineno));
+  };
+  auto is_result = [](const Json& j) { return j.is_object() && j.contains("result"); };
+  // Takes a reference: copying a deeply nested value would recurse.
+  auto bounded = [&](const Json& j) {
+    if (nesting(j) > kMaxNesting) throw InputError("line " + std::to_string(lineno) + ": nested more than " + std::to_string(kMaxNesting) + " levels deep");
+  };
+  try {
+    auto header = next_line();
+    if (!header) throw InputError("empty trace");
+    bounded(*header);
+    if (!header->is_object() || header->value("format", "") != "stepwise-trace")
+      throw InputError("line 1: not a stepwise trace header (\"format\":\"stepwise-trace\")");
+    const Json version = header->value("version", Json());
+    if (version != 1 && version != 2) throw InputError("line 1: unsupported version (expected 1 or 2)");
+    const Algorithm& alg = find_algorithm(require(*header, "algorithm", "line 1").get<std::string>());
+    const Json& numeric = require(*header, "numeric", "line 1");
+    if (!numeric.is_string()) throw InputError("line 1: \"numeric\" must be a string");
+    const Numeric mode = parse_numeric_for(alg, numeric.get<std::string>());
+    const Json input = require(*header, "input", "line 1");
+    // The replay: exact where the algorithm has it, else the reference (transcendental values).
+    const Numeric replay_mode = alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
+    if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
+    alg.validate(input, replay_mode);
+    const Tolerance tol{mode_tolerance(mode), !decisions_only};
+    const bool rounded = tol.rel > 0 && mode != Numeric::reference;
+    auto diverged = [&](const std::string& where, const std::string& what) {
+      std::string m = where + " diverges (trace line " + std::to_string(lineno) + "): " + what;
+      if (rounded && what.find("beyond the tolerance") != std::string::npos)
+        m += "; only values differ: --decisions-only compares the decisions alone";
+      return Diverged{m};
+    };
+
+    // Replay: the reference run streams its steps; each is compared with the trace's next line as
+    // it is made, so memory stays flat however long the trace.
+    std::size_t i = 0;
+    std::optional<Json> pending;  // a trace line read but not yet matched
+    LineSink sink([&](const std::string& text) {
+      if (text.rfind("{\"result\"", 0) == 0) return;  // the oracle judges the result
+      if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
+      if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
+        ++i;
+        return;
+      }
+      const Json want = Json::parse(text);
+      pending = parse_json_text(line, "line " + std::to_string(lineno));
+      bounded(*pending);
+      const std::string where = "step " + std::to_string(i);
+      if (is_result(*pending)) throw diverged(where, "the trace ends its steps here; the algorithm has more");
+      require_step_shape(*pending, lineno);
+      if (auto d = step_diff(want, *pending, tol, alg.listing)) throw diverged(where, *d);
+      pending.reset();
+      ++i;
+    });
+    std::ostream replay(&sink);
+    replay.exceptions(std::ios::badbit);  // let Diverged and InputError through the stream
+    alg.stream(input, replay_mode, replay);
+
+    auto last = next_line();
+    if (last) bounded(*last);
+    if (last && !is_result(*last)) {
+      require_step_shape(*last, lineno);
+      throw diverged("step " + std::to_string(i), "the algorithm ends its steps here; the trace has more");
+    }
+    if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
+    if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
+    const Json oracle = alg.oracle(input);
+    if (auto d = value_diff(alg.canonical(oracle), alg.canonical((*last)["result"]), tol, false, "result")) throw diverged("result", *d);
+    rep.steps = i;
+    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::exact ? "exact oracle" : "reference") +
+                  (tol.rel > 0 && tol.numbers ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))" : "");
+  } catch (const Diverged& d) {
+    rep.status = 1;
+    rep.message = d.message;
+  } catch (const InputError& e) {
+    rep.status = 2;
+    rep.message = e.what();
+  } catch (const Json::exception& e) {
+    rep.status = 2;
+    rep.message = std::string("malformed trace: ") + e.what();
+  }
+  return rep;
+}
+
+}  // namespace sw
