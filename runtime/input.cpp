@@ -124,6 +124,11 @@ std::int64_t parse_integer(const Json& v, const std::string& what, std::int64_t 
   return q.get_num().get_si();
 }
 
+void check_digits(const Rational& v, const std::string& what) {
+  if (mpz_sizeinbase(v.get_num_mpz_t(), 2) > 64 || mpz_sizeinbase(v.get_den_mpz_t(), 2) > 64)
+    throw InputError(what + ": numerator or denominator beyond 64 bits");
+}
+
 void check_bound(const Rational& v, double bound, const std::string& what) {
   if (abs(v) > Rational(bound))
     throw InputError(what + ": " + v.get_str() + " is beyond the bound " + num::to_text(bound));

@@ -31,6 +31,9 @@ Vec2<Rational> parse_point2(const Json& obj, const char* key);
 Vec3<Rational> parse_point3(const Json& obj, const char* key);
 // An integer in [lo, hi] (a JSON integer, an integral number or an exact string such as "7").
 std::int64_t parse_integer(const Json& v, const std::string& what, std::int64_t lo, std::int64_t hi);
+// Throws unless v's numerator and denominator have at most 64 bits each: the curves' bound on
+// exact input, which keeps exact arithmetic on long walks fast.
+void check_digits(const Rational& v, const std::string& what);
 // Throws unless |v| <= bound.
 void check_bound(const Rational& v, double bound, const std::string& what);
 

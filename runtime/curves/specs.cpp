@@ -35,8 +35,7 @@ CubicInput parse_cubic(const Json& j, Numeric n) {
   for (int k = 0; k < 4; ++k) {
     const std::string what = "input.coeffs[" + std::to_string(k) + "]";
     in.c[k] = parse_rational(c[k], what);
-    if (mpz_sizeinbase(in.c[k].get_num_mpz_t(), 2) > 64 || mpz_sizeinbase(in.c[k].get_den_mpz_t(), 2) > 64)
-      throw InputError(what + ": numerator or denominator beyond 64 bits");
+    check_digits(in.c[k], what);
     if (n == Numeric::integer && in.c[k].get_den() != 1) throw InputError(what + ": " + in.c[k].get_str() + " is not an integer (int mode takes integer coefficients)");
   }
   in.xs = parse_integer(j["xs"], "input.xs", -kMaxX, kMaxX);
@@ -180,8 +179,7 @@ ImplicitInput parse_implicit(const Json& j) {
     const Json& t = P[k];
     if (!t.is_array() || t.size() != 3) throw InputError(what + ": expected a term [coef, i, j]");
     const Rational coef = parse_rational(t[0], what + "[0]");
-    if (mpz_sizeinbase(coef.get_num_mpz_t(), 2) > 64 || mpz_sizeinbase(coef.get_den_mpz_t(), 2) > 64)
-      throw InputError(what + "[0]: numerator or denominator beyond 64 bits");
+    check_digits(coef, what + "[0]");
     const auto i = parse_integer(t[1], what + "[1]", 0, 3), e = parse_integer(t[2], what + "[2]", 0, 3);
     if (i + e > 3)
       throw InputError(what + ": x^" + std::to_string(i) + " y^" + std::to_string(e) + " has degree " + std::to_string(i + e) +
@@ -330,7 +328,7 @@ struct BezierSpec {
       for (int a = 0; a < 2; ++a) {
         in.p[i][a] = parse_rational(b[i][a], what + "[" + std::to_string(a) + "]");
         check_bound(in.p[i][a], double(kMaxCoord), what + "[" + std::to_string(a) + "]");
-        if (mpz_sizeinbase(in.p[i][a].get_den_mpz_t(), 2) > 64) throw InputError(what + ": denominator beyond 64 bits");
+        check_digits(in.p[i][a], what + "[" + std::to_string(a) + "]");
       }
     }
     in.n = parse_integer(j["n"], "input.n", 1, kMaxSegments);
