@@ -22,6 +22,7 @@
 //             (e.g. a set sorted), for comparing with the oracle;
 //             static bool bench_runs(set name, Numeric): false skips a set in that mode;
 //             static std::vector<Handle> handles(): the inputs a view lets the user drag;
+//             the view hooks of sweep.hpp (table_lines, sweeper, outline);
 //             using Filters = std::tuple<number types for filtered mode> (default Interval): the
 //             stages of the filter, cheapest first. Each must throw Uncertain when it cannot
 //             decide, or raise its flag (Mag; see run_filter_stage), and have a NumericOf
@@ -258,6 +259,8 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
   return rows;
 }
 
+template <class Spec> void fill_view_hooks(Algorithm& a);  // sweep.hpp: table rows, sweep, outline
+
 template <class Spec> Algorithm make_algorithm() {
   Algorithm a;
   a.id = Spec::Algo::id;
@@ -317,7 +320,10 @@ template <class Spec> Algorithm make_algorithm() {
   if constexpr (requires(Json r) { Spec::canonical(r); }) a.canonical = [](const Json& r) { return Spec::canonical(r); };
   else a.canonical = [](const Json& r) { return r; };
   a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };
+  fill_view_hooks<Spec>(a);
   return a;
 }
 
 }  // namespace sw
+
+#include "sweep.hpp"  // the view hooks, built on the helpers above

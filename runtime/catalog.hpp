@@ -11,6 +11,7 @@
 #include "core/probe.hpp"
 #include "core/step.hpp"
 #include "input.hpp"
+#include "views.hpp"
 
 namespace sw {
 
@@ -32,12 +33,6 @@ struct Recorded {
   Json result;
 };
 
-// The views an algorithm declares; the visualizer builds its canvas from the first one it has.
-enum class View : std::uint8_t {
-  plane2d,  // pixels and 2D geometry over a grid
-  orbit3d,  // 3D geometry under an orbit camera
-};
-
 // An input value the user may drag or type on a view: a JSON pointer into the input, what it is,
 // and the grid it snaps to (1/snap; an integer input snaps to 1).
 struct Handle {
@@ -51,7 +46,11 @@ struct Handle {
 struct Algorithm {
   std::string_view id, family, summary;
   Listing listing;
-  std::vector<View> views;
+  std::vector<View> views;         // the first is shown first (views.hpp)
+  // The table view's rows: steps on these listing lines each start a row (empty: every step).
+  std::vector<std::string_view> table_lines;
+  Sweep sweep;                     // optional: fills the image view
+  Outline outline;                 // optional: the exact curve, drawn with the pixels
   std::vector<Handle> handles;
   std::vector<Numeric> numerics;  // the number types this algorithm runs on
   std::string example;            // a default input, as JSON text

@@ -1,5 +1,6 @@
 // `stepwise check`: replays a trace in exact (or reference) mode and compares it step by step and
 // field by field, then its result with the oracle. Format and rules: docs/trace-format.md.
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <optional>
@@ -117,6 +118,19 @@ struct Diverged {
   std::string message;
 };
 
+// A geometry item is an object with one kind key ({"pixel":[i,j]}) and optional modifiers.
+constexpr const char* kItemModifiers[] = {"label", "life", "value"};
+bool is_modifier(std::string_view key) {
+  for (const char* m : kItemModifiers)
+    if (key == m) return true;
+  return false;
+}
+std::string item_kind(const Json& item) {
+  for (auto it = item.begin(); it != item.end(); ++it)
+    if (!is_modifier(it.key())) return it.key();
+  return "";
+}
+
 // What differs between the replay's step and the trace's, or nothing. Names the field.
 std::optional<std::string> step_diff(const Json& want, const Json& got, const Tolerance& tol, const Listing& listing) {
   // Steps inside a nested call name the callee ("in") and count lines in its listing.
@@ -134,7 +148,8 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
   const Json& gv = got.at("vars");
   for (auto it = wv.begin(); it != wv.end(); ++it) {
     if (!gv.contains(it.key())) return "variable " + it.key() + ": missing";
-    const bool is_int = it->is_number_integer();  // the replay writes integers bare, numbers as strings
+    // The replay writes integers bare and numbers as strings; an integer list is compared as integers.
+    const bool is_int = it->is_number_integer() || (it->is_array() && !it->empty() && std::all_of(it->begin(), it->end(), [](const Json& x) { return x.is_number_integer(); }));
     if (!tol.numbers && !is_int) continue;
     if (auto d = value_diff(*it, gv[it.key()], tol, is_int, "variable " + it.key())) return d;
   }
@@ -144,14 +159,25 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
   const Json& gg = got.at("geo");
   if (wg.size() != gg.size()) return "geo: expected " + std::to_string(wg.size()) + " items, got " + std::to_string(gg.size());
   for (std::size_t k = 0; k < wg.size(); ++k) {
-    const auto first = wg[k].begin();  // each geometry item is a one-key object
-    const std::string name = first.key();
+    const std::string name = item_kind(wg[k]);
     const std::string path = "geo[" + std::to_string(k) + "]." + name;
-    if (!gg[k].is_object() || gg[k].size() != 1 || !gg[k].contains(name)) return path + ": expected a \"" + name + "\" item, got " + show(gg[k]);
+    if (!gg[k].is_object() || !gg[k].contains(name)) return path + ": expected a \"" + name + "\" item, got " + show(gg[k]);
     const auto kind = parse_geo(name);
     const bool decision = kind && geo_desc(*kind).decision;  // the vocabulary's rule
-    if (!tol.numbers && !decision) continue;
-    if (auto d = value_diff(first.value(), gg[k][name], tol, decision, path)) return d;
+    if (tol.numbers || decision)
+      if (auto d = value_diff(wg[k][name], gg[k][name], tol, decision, path)) return d;
+    // Label, lifetime and value are the trace's to state or leave out (a hand-written trace need
+    // not label its geometry); stated, they must match.
+    for (const char* key : kItemModifiers) {
+      if (!gg[k].contains(key)) continue;
+      const std::string at = "geo[" + std::to_string(k) + "]." + key;
+      if (!wg[k].contains(key)) return at + ": not recorded by the algorithm";
+      if (std::string_view(key) != "value") {
+        if (wg[k][key] != gg[k][key]) return at + ": expected " + wg[k][key].dump() + ", got " + gg[k][key].dump();
+      } else if (tol.numbers) {
+        if (auto d = value_diff(wg[k][key], gg[k][key], tol, false, at)) return d;
+      }
+    }
   }
   return std::nullopt;
 }
@@ -163,18 +189,34 @@ void require_step_shape(const Json& j, std::size_t lineno) {
   if (!j.contains("kind") || !j["kind"].is_string()) bad("step without a string \"kind\"");
   if (!j.contains("vars") || !j["vars"].is_object()) bad("step without a \"vars\" object");
   if (!j.contains("geo") || !j["geo"].is_array()) bad("step without a \"geo\" array");
-  // A variable is a number, a "p/q" string, or a vector of 2 or 3 of them.
+  for (const Json& item : j["geo"]) {
+    if (!item.is_object()) bad("a geometry item that is not an object");
+    std::size_t kinds = 0;
+    for (auto it = item.begin(); it != item.end(); ++it) {
+      if (!is_modifier(it.key())) ++kinds;
+      else if (it.key() == "value") (void)parse_rational(*it, "line " + std::to_string(lineno) + ": geometry value");
+      else if (!it->is_string() || (it.key() == "life" && !parse_life(it->get<std::string>()))) bad("a geometry label or life that is not one of its strings");
+    }
+    if (kinds != 1) bad("a geometry item with other than one kind key");
+  }
+  // A variable is a number, a "p/q" string, a list of up to kMaxListLength of them (a vector is a list
+  // of 2 or 3), or a colour {"rgb": [r, g, b]}.
   auto number = [&](const Json& v, const std::string& what) {
     if (!v.is_number() && !v.is_string()) bad("a variable that is neither a number, a \"p/q\" string nor a vector of them");
     if (v.is_string()) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what);
   };
   for (auto it = j["vars"].begin(); it != j["vars"].end(); ++it) {
-    if (!it->is_array()) {
-      number(*it, "vars." + it.key());
+    const Json* list = &*it;
+    if (it->is_object()) {
+      if (it->size() != 1 || !it->contains("rgb") || !(*it)["rgb"].is_array() || (*it)["rgb"].size() != 3) bad("an object variable other than a colour {\"rgb\": [r, g, b]}");
+      list = &(*it)["rgb"];
+    }
+    if (!list->is_array()) {
+      number(*list, "vars." + it.key());
       continue;
     }
-    if (it->size() < 2 || it->size() > 3) bad("a vector variable of other than 2 or 3 components");
-    for (const Json& c : *it) number(c, "vars." + it.key());
+    if (list->size() > kMaxListLength) bad("a list variable of more than 64 entries");
+    for (const Json& c : *list) number(c, "vars." + it.key());
   }
 }
 

@@ -29,8 +29,9 @@ void AtomicFile::commit() {
 std::string trace_schema() {
   using OJ = nlohmann::ordered_json;
   const OJ number = {{"$ref", "#/$defs/number"}};
-  OJ kinds = OJ::array(), numerics = OJ::array(), geo_props = OJ::object();
+  OJ kinds = OJ::array(), numerics = OJ::array(), geo_props = OJ::object(), lives = OJ::array();
   for (std::string_view k : kStepKindNames) kinds.push_back(k);
+  for (std::string_view l : kLifeNames) lives.push_back(l);
   for (Numeric n : kNumerics) numerics.push_back(numeric_name(n));
   for (const GeoDesc& g : kGeoDescs) {
     OJ item = {{"type", "array"}, {"items", g.integer ? OJ{{"type", "integer"}} : number}};
@@ -38,6 +39,15 @@ std::string trace_schema() {
     else item["minItems"] = g.dim, item["description"] = "a list of " + std::to_string(g.dim) + "D points, coordinates in order";
     geo_props[std::string(g.name)] = std::move(item);
   }
+  OJ geo_item = {{"type", "object"},
+                 {"description", "One kind key with its values, and optionally a label, a lifetime and a value (a colour key)."},
+                 {"minProperties", 1},
+                 {"maxProperties", 4},
+                 {"properties", geo_props},
+                 {"additionalProperties", false}};
+  geo_item["properties"]["label"] = {{"type", "string"}};
+  geo_item["properties"]["life"] = {{"enum", lives}, {"description", "step: this step only; keep: from now on; replace: from now on, replacing the earlier item with this label"}};
+  geo_item["properties"]["value"] = number;
   OJ s;
   s["$schema"] = "https://json-schema.org/draft/2020-12/schema";
   s["$id"] = "stepwise-trace-v2";
@@ -64,9 +74,16 @@ std::string trace_schema() {
                     {"in", {{"type", "string"}, {"description", "inside a nested call: the callee's id; line is in its listing"}}},
                     {"line", {{"type", "integer"}, {"minimum", 1}}},
                     {"kind", {{"enum", kinds}}},
-                    {"vars", {{"type", "object"}, {"additionalProperties", {{"oneOf", OJ::array({number, {{"type", "array"}, {"items", number}, {"minItems", 2}, {"maxItems", 3}}})}}}}},
-                    {"geo", {{"type", "array"},
-                             {"items", {{"type", "object"}, {"minProperties", 1}, {"maxProperties", 1}, {"properties", geo_props}, {"additionalProperties", false}}}}}}}};
+                    {"vars", {{"type", "object"},
+                              {"description", "A number, a list of numbers (a vector of 2 or 3, or a short list such as a traversal stack), or a colour."},
+                              {"additionalProperties",
+                               {{"oneOf", OJ::array({number,
+                                                     {{"type", "array"}, {"items", number}, {"maxItems", kMaxListLength}},
+                                                     {{"type", "object"},
+                                                      {"required", OJ::array({"rgb"})},
+                                                      {"additionalProperties", false},
+                                                      {"properties", {{"rgb", {{"type", "array"}, {"items", number}, {"minItems", 3}, {"maxItems", 3}}}}}}})}}}}},
+                    {"geo", {{"type", "array"}, {"items", geo_item}}}}}};
   defs["result"] = {{"type", "object"}, {"required", OJ::array({"result"})}, {"properties", {{"result", {{"type", "object"}}}}}, {"additionalProperties", false}};
   s["$defs"] = std::move(defs);
   return s.dump(2) + "\n";

@@ -1,10 +1,14 @@
 // Reading an exact recorded step for the per-step expectations: every variable by name (integers
 // exactly, numbers as rationals, vectors as name.x, name.y, name.z), and a check that fails for a variable no expectation looked at.
+// Likewise every geometry item, and a check that fails for an item no expectation took.
 #pragma once
 #include <catch2/catch.hpp>
 #include <map>
+#include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
+#include <vector>
 #include "core/probe.hpp"
 
 namespace sw::testing {
@@ -29,10 +33,21 @@ inline StepValues values_of(const Recorder<Rational>& t, std::size_t s) {
   StepValues out;
   for (std::uint32_t k = t.at(s).var_begin; k < t.at(s).var_end; ++k) {
     const VarRecord& var = t.var_at(k);
-    if (var.is_int) out.v[var.name] = Rational(t.int_value(var.slot));
-    else if (var.count == 1) out.v[var.name] = t.num_value(var.slot);
-    else  // a vector's components as name.x, name.y, name.z
-      for (std::uint32_t c = 0; c < var.count; ++c) out.v[std::string(var.name) + "." + "xyz"[c]] = t.num_value(var.slot + c);
+    auto at = [&](std::uint32_t c) { return var.is_int ? Rational(t.int_value(var.slot + c)) : t.num_value(var.slot + c); };
+    const std::string name = var.name;
+    switch (var.shape) {
+      case VarShape::scalar: out.v[name] = at(0); break;
+      case VarShape::vector:  // name.x, name.y, name.z
+        for (std::uint32_t c = 0; c < var.count; ++c) out.v[name + "." + "xyz"[c]] = at(c);
+        break;
+      case VarShape::colour:  // name.r, name.g, name.b
+        for (std::uint32_t c = 0; c < 3; ++c) out.v[name + "." + "rgb"[c]] = at(c);
+        break;
+      case VarShape::list:  // name.size, then name[0], name[1], ...
+        out.v[name + ".size"] = Rational(var.count);
+        for (std::uint32_t c = 0; c < var.count; ++c) out.v[name + "[" + std::to_string(c) + "]"] = at(c);
+        break;
+    }
   }
   return out;
 }
@@ -42,6 +57,56 @@ inline void require_all_checked(const StepValues& sv, std::size_t step) {
   for (const auto& [name, value] : sv.v) {
     INFO("step " << step << " records " << name << " with no expectation");
     CHECK(sv.checked.count(name));
+  }
+}
+
+// One geometry item of an exact recorded step: its values (integer kinds exactly) and what else the
+// step attached to it, with the mark an expectation sets when it has looked at the item.
+struct GeoItem {
+  GeoKind kind{};
+  std::vector<Rational> values;
+  std::string label;              // empty if none
+  std::string life;               // empty: this step only; else the lifetime's name ("keep", ...)
+  std::optional<Rational> value;  // a value a view colours the item by, if any
+  bool checked = false;
+};
+
+struct StepGeometry {
+  std::vector<GeoItem> items;
+  // The first item of `kind` not taken yet (so several items of one kind are taken in recorded
+  // order), marked as checked; the test fails if the step has none left.
+  GeoItem& take(GeoKind kind) {
+    for (GeoItem& g : items)
+      if (g.kind == kind && !g.checked) {
+        g.checked = true;
+        return g;
+      }
+    FAIL("the step records no (further) " << geo_name(kind));
+    throw std::logic_error("unreachable");
+  }
+};
+
+inline StepGeometry geometry_of(const Recorder<Rational>& t, std::size_t s) {
+  StepGeometry out;
+  for (std::uint32_t g = t.at(s).geo_begin; g < t.at(s).geo_end; ++g) {
+    const GeoRecord& r = t.geo_at(g);
+    GeoItem item;
+    item.kind = r.kind;
+    for (std::uint32_t k = 0; k < r.count; ++k)
+      item.values.push_back(geo_desc(r.kind).integer ? Rational(t.int_value(r.slot + k)) : t.num_value(r.slot + k));
+    if (r.label) item.label = r.label;
+    if (r.life != Life::step) item.life = std::string(life_name(r.life));
+    if (r.value != GeoRecord::kNoValue) item.value = t.num_value(r.value);
+    out.items.push_back(std::move(item));
+  }
+  return out;
+}
+
+// Every geometry item the step records must have been taken by its expectation.
+inline void require_all_geometry_checked(const StepGeometry& g, std::size_t step) {
+  for (const GeoItem& item : g.items) {
+    INFO("step " << step << " records a " << geo_name(item.kind) << " with no expectation");
+    CHECK(item.checked);
   }
 }
 

@@ -157,6 +157,35 @@ TEST_CASE("check: a vector variable's component tampered fails and names it", "[
   lines[i]["vars"]["d1"][1] = Rational(parse_rational(lines[i]["vars"]["d1"][1], "") + 1).get_str();
   require_diverges(lines, i - 1, "variable d1[1]");
   CHECK(check(lines, true).status == 0);
-  lines[i]["vars"]["d1"] = Json::array({1, 2, 3, 4});
-  CHECK(check(lines).status == 2);  // a vector of 4 is malformed
+  lines[i]["vars"]["d1"] = Json::array({1, 2, 3, 4});  // a list of 4 is well formed, but not this variable
+  require_diverges(lines, i - 1, "variable d1");
+  lines[i]["vars"]["d1"] = Json(std::vector<int>(kMaxListLength + 1, 0));
+  CHECK(check(lines).status == 2);  // longer than any list variable: malformed
+}
+
+TEST_CASE("check: a geometry item's label, lifetime or value tampered fails and naming none passes", "[check]") {
+  // ray-box's running interval: {"segment3":[...],"label":"[t_near, t_far]","value":...,"life":"replace"}.
+  const char* box = R"({"ray":{"o":[-3,0.5,0.5],"d":[1,0.125,0.0625]},"box":{"min":[0,0,0],"max":[1,1,1]}})";
+  const auto lines = trace_lines("ray-box", box, Numeric::exact);
+  const std::size_t i = find_step(lines, "advance", "t_near");
+  REQUIRE(lines[i]["geo"].size() == 2);
+  REQUIRE(lines[i]["geo"][1].contains("value"));
+  for (const char* key : {"label", "life", "value"}) {
+    INFO(key);
+    auto t = lines;
+    Json& item = t[i]["geo"][1];
+    item[key] = std::string(key) == "value" ? Json(Rational(parse_rational(item[key], "") + 1).get_str()) : Json(std::string(key) == "life" ? "keep" : "[t0, t1]");
+    require_diverges(t, i - 1, std::string("geo[1].") + key);
+    CHECK(check(t, true).status == (std::string(key) == "value" ? 0 : 1));  // a value is a number; label and life are not
+    // A trace need not state them at all (a hand-written one), but what it states must be known.
+    t = lines;
+    t[i]["geo"][1].erase(key);
+    CHECK(check(t).status == 0);
+  }
+  auto t = lines;
+  t[i]["geo"][0]["life"] = "forever";
+  CHECK(check(t).status == 2);
+  t = lines;
+  t[i]["geo"][0]["colour"] = "red";  // a second kind key: not an item
+  CHECK(check(t).status == 2);
 }

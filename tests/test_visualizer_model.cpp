@@ -3,6 +3,7 @@
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include <map>
+#include <set>
 #include <random>
 #include "compare.hpp"
 #include "lesson.hpp"
@@ -154,6 +155,34 @@ TEST_CASE("visualizer model: plot order, cell lookup and state with changes", "[
   for (const VarState& v : late) CHECK(scan[v.name] == v.text);
   CHECK(long_line->find_kind(s, StepKind::plot, true).value() > s);
   CHECK(long_line->find_kind(s, StepKind::done, false) == std::nullopt);
+}
+
+TEST_CASE("visualizer model: geometry lifetimes keep, replace and end with the step", "[visualizer][model]") {
+  // ray-box: the ray and the box are kept from step 0; each clip step keeps its axis' slab and
+  // replaces the running [t_near, t_far]; the hit point lives on its own step only.
+  const auto m = record_model(find_algorithm("ray-box"), parse_json_text(R"({"ray":{"o":[-3,0.5,0.5],"d":[1,0.125,0.0625]},"box":{"min":[0,0,0],"max":[1,1,1]}})", "t"), Numeric::exact);
+  const TraceView& t = m->trace();
+  auto labels_at = [&](std::size_t step) {
+    std::multiset<std::string> out;
+    for (std::uint32_t g : m->visible_items(step)) {
+      const GeoRecord& geo = t.geo_at(g);
+      out.insert(std::string(geo_name(geo.kind)) + ":" + (geo.label ? geo.label : ""));
+    }
+    return out;
+  };
+  using Set = std::multiset<std::string>;
+  REQUIRE(m->size() == 5);  // init, three clips, hit
+  CHECK(labels_at(0) == Set{"ray:", "box:"});
+  CHECK(labels_at(1) == Set{"ray:", "box:", "segment3:x slab", "segment3:[t_near, t_far]"});
+  CHECK(labels_at(3) == Set{"ray:", "box:", "segment3:x slab", "segment3:y slab", "segment3:z slab", "segment3:[t_near, t_far]"});
+  CHECK(labels_at(4) == Set{"ray:", "box:", "segment3:x slab", "segment3:y slab", "segment3:z slab", "segment3:[t_near, t_far]", "point3:hit"});
+  // The interval shown at step k is the one step k recorded (its value t_far - t_near = 1 at the end: t in [3, 4]).
+  for (std::size_t s = 1; s <= 3; ++s)
+    for (std::uint32_t g : m->visible_items(s))
+      if (t.geo_at(g).label && std::string(t.geo_at(g).label) == "[t_near, t_far]") CHECK(g >= t.at(s).geo_begin);
+  const auto last = m->visible_items(3);
+  for (std::uint32_t g : last)
+    if (t.geo_at(g).label && std::string(t.geo_at(g).label) == "[t_near, t_far]") CHECK(*t.geo_value(t.geo_at(g)) == 1);
 }
 
 TEST_CASE("visualizer texture: scrubbing updates the texture incrementally and exactly", "[visualizer][texture]") {

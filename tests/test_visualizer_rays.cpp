@@ -4,7 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "headless.hpp"
-#include "ray_canvas.hpp"
+#include "orbit_canvas.hpp"
+#include "theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -27,8 +28,8 @@ int near_colour(const HeadlessHost& host, std::array<float, 2> p, ImU32 want) {
   return n;
 }
 
-const RayCanvas& ray_canvas(const App& app, int i) {
-  const auto* c = dynamic_cast<const RayCanvas*>(app.canvas(i));
+const OrbitCanvas& ray_canvas(const App& app, int i) {
+  const auto* c = dynamic_cast<const OrbitCanvas*>(app.canvas(i));
   REQUIRE(c);
   return *c;
 }
@@ -61,7 +62,7 @@ TEST_CASE("visualizer rays: the ray lessons load into the 3D canvas", "[visualiz
     INFO(path);
     REQUIRE(host.app().open_lesson(path));
     host.render();
-    CHECK(dynamic_cast<const RayCanvas*>(host.app().canvas(0)));
+    CHECK(dynamic_cast<const OrbitCanvas*>(host.app().canvas(0)));
     CHECK(host.app().highlighted_line() == host.app().model(0)->trace().at(host.app().step()).line);
   }
   CHECK(rays >= 2);
@@ -77,12 +78,12 @@ TEST_CASE("visualizer rays: the hit marker is at the hit point on the hit step o
     const auto [step, p] = hit_of(*app.model(0));
     app.set_step(step - 1);
     host.render();
-    CHECK(near_colour(host, *ray_canvas(app, 0).screen_of(p), kRayHit) == 0);
+    CHECK(near_colour(host, *ray_canvas(app, 0).screen_of(p), kHitColour) == 0);
     app.set_step(step);
     host.render();
     const auto at = ray_canvas(app, 0).screen_of(p);
     REQUIRE(at);
-    CHECK(near_colour(host, *at, kRayHit) >= 20);
+    CHECK(near_colour(host, *at, kHitColour) >= 20);
     return p;
   };
   SECTION("the shared-edge crack: exact hits, float misses") {
@@ -90,14 +91,16 @@ TEST_CASE("visualizer rays: the hit marker is at the hit point on the hit step o
     // The float run (right) missed: no marker at the same world point.
     const auto at_float = ray_canvas(app, 1).screen_of(p);
     REQUIRE(at_float);
-    CHECK(near_colour(host, *at_float, kRayHit) == 0);
+    CHECK(near_colour(host, *at_float, kHitColour) == 0);
   }
   SECTION("the far sphere, zoomed onto it") {
     marker_only_on_hit_step("06-far-sphere.md");
   }
 }
 
-TEST_CASE("visualizer rays: ray_input_edit moves o or o + d", "[visualizer][rays]") {
+TEST_CASE("visualizer rays: handle_edit3 moves the declared o or o + d", "[visualizer][rays]") {
+  const Algorithm& alg = find_algorithm("ray-sphere-stable");
+  auto ray_input_edit = [&](const Json& input, std::size_t k, V3 p, double snap) { return handle_edit3(alg, input, k, p, snap); };
   const Json in = parse_json_text(R"({"ray":{"o":[0,0,10],"d":[1,2,-10]},"sphere":{"c":[0,0,0],"r":1}})", "t");
   const auto moved_o = ray_input_edit(in, 0, V3{1.3, -2.26, 9.9}, 0.25);
   REQUIRE(moved_o);
@@ -143,13 +146,14 @@ TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the re
   CHECK(m.input()["ray"]["d"] != before["ray"]["d"]);
   CHECK(m.input()["box"] == before["box"]);
   // The trace was re-recorded with the new ray: its geometry carries the edited direction.
-  const RayScene sc = RayScene::from_model(m);
-  CHECK(Json::array({sc.d.x, sc.d.y, sc.d.z}) == m.input()["ray"]["d"]);
+  const Scene3 sc = Scene3::from_model(m, {});
+  REQUIRE(sc.first_ray);
+  CHECK(Json::array({sc.first_ray->second.x, sc.first_ray->second.y, sc.first_ray->second.z}) == m.input()["ray"]["d"]);
   CHECK(app.step() == m.last());  // it was at the end, and stays at the end
   // The o handle is still where the input says.
   const auto o_at = ray_canvas(app, 0).screen_of(o);
   REQUIRE(o_at);
-  CHECK(near_colour(host, *o_at, kRayOrigin) >= 9);
+  CHECK(near_colour(host, *o_at, theme::kHandleP0) >= 9);
 
   // A left-drag on empty space orbits the camera and leaves the input alone.
   const Json edited = m.input();

@@ -5,6 +5,7 @@
 #include "app.hpp"
 #include <algorithm>
 #include <cmath>
+#include "view_registry.hpp"
 
 namespace sw::vis {
 
@@ -66,11 +67,14 @@ std::string App::load(const Algorithm& alg, const Json& input, Numeric numeric, 
   alg_ = &alg, input_ = input, numeric_ = numeric, compare_ = compare;
   a_ = std::move(a), b_ = std::move(b);
   stats_ = b_ ? std::optional(compare_traces(*a_, *b_)) : std::nullopt;
-  const View view = alg.views.empty() ? View::plane2d : alg.views.front();
-  if (view_ != view || !canvases_[0]) {
-    view_ = view;
-    for (auto& c : canvases_) c = make_canvas(view_, *textures_);
-  }
+  // A re-run keeps the view shown if the algorithm has it; else its first declared view.
+  const bool has_view = std::find(alg.views.begin(), alg.views.end(), view_) != alg.views.end();
+  const View view = keep_view && has_view && canvases_[0] ? view_ : alg.views.empty() ? View::plane2d : alg.views.front();
+  if (!keep_view)
+    for (auto& pair : stashed_)
+      for (auto& c : pair)
+        if (c) c->fit();
+  show_view(view);
   if (!keep_view) {
     canvases_[0]->fit();
     step_ = 0;
@@ -167,6 +171,23 @@ void App::fill_endpoint_fields() {
   }
 }
 
+void App::show_view(View view) {
+  if (view != view_ && canvases_[0]) stashed_[static_cast<std::size_t>(view_)] = std::move(canvases_);
+  if (view != view_ || !canvases_[0]) {
+    view_ = view;
+    canvases_ = std::move(stashed_[static_cast<std::size_t>(view)]);
+    for (auto& c : canvases_)
+      if (!c) c = make_canvas(view_, *textures_);
+  }
+}
+
+bool App::set_view(View view) {
+  if (!alg_ || std::find(alg_->views.begin(), alg_->views.end(), view) == alg_->views.end()) return false;
+  if (view != view_) view_tab_pending_ = true;
+  show_view(view);
+  return true;
+}
+
 void App::set_step(std::size_t step) { step_ = a_ ? std::min(step, a_->last()) : 0; }
 
 void App::jump_and_focus(std::size_t step) {
@@ -191,6 +212,10 @@ void App::handle_keys() {
   for (ImWchar ch : io.InputQueueCharacters) {
     if (ch == '+' || ch == '=') speed_ = std::min<int>(speed_ + 1, int(kSpeeds.size()) - 1);
     if (ch == '-' || ch == '_') speed_ = std::max(speed_ - 1, 0);
+    if ((ch == 'v' || ch == 'V') && alg_ && alg_->views.size() > 1) {  // the next declared view
+      const auto it = std::find(alg_->views.begin(), alg_->views.end(), view_);
+      set_view(it == alg_->views.end() || it + 1 == alg_->views.end() ? alg_->views.front() : *(it + 1));
+    }
   }
 }
 
@@ -244,6 +269,7 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
     if (a_ && ImGui::SmallButton("Dismiss")) error_.clear();
   }
   if (b_) draw_compare_strip();
+  draw_view_tabs();
   ImVec2 avail = ImGui::GetContentRegionAvail();
   if (a_ && canvases_[0]) {
     const int n = b_ ? 2 : 1;
@@ -268,10 +294,28 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
   ImGui::PopStyleVar();
 }
 
+void App::draw_view_tabs() {
+  if (!alg_ || alg_->views.size() < 2) return;
+  std::optional<View> chosen;
+  if (ImGui::BeginTabBar("##views")) {
+    for (View v : alg_->views) {
+      const ViewInfo& info = view_info(v);
+      if (ImGui::BeginTabItem(info.label, nullptr, v == view_ && view_tab_pending_ ? ImGuiTabItemFlags_SetSelected : 0)) {
+        if (v == view_) view_tab_pending_ = false;
+        else if (!view_tab_pending_) chosen = v;
+        ImGui::EndTabItem();
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (V: the next view)", info.help);
+    }
+    ImGui::EndTabBar();
+  }
+  if (chosen) show_view(*chosen);
+}
+
 void App::draw_compare_strip() {
   const CompareStats& s = *stats_;
   const std::string na(numeric_name(numeric_)), nb(numeric_name(*compare_));
-  if (view_ == View::plane2d) {
+  if (std::find(alg_->views.begin(), alg_->views.end(), View::plane2d) != alg_->views.end()) {
     ImGui::Text("%s: %zu steps, %zu pixels    %s: %zu steps, %zu pixels    ", na.c_str(), s.steps_a, s.pixels_a, nb.c_str(), s.steps_b, s.pixels_b);
     ImGui::SameLine();
     ImGui::TextColored(s.pixel_mismatches ? theme::kError : theme::kGood, "%zu mismatched pixels", s.pixel_mismatches);

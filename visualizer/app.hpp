@@ -38,6 +38,10 @@ class App {
   std::size_t step() const { return step_; }
   std::size_t steps() const { return a_ ? a_->size() : 0; }
   void set_playing(bool p) { playing_ = p; }
+  // Shows one of the open algorithm's declared views (false if it declares no such view). The
+  // first declared view shows on opening; a re-run with a new input or number type keeps the view.
+  bool set_view(View view);
+  View view() const { return view_; }
   // Goes to a step and centres the canvas on it, zoomed in enough to see single pixels.
   void jump_and_focus(std::size_t step);
 
@@ -82,8 +86,13 @@ class App {
   std::optional<Numeric> compare_;
   std::shared_ptr<const TraceModel> a_, b_;
   std::optional<CompareStats> stats_;
-  std::array<std::unique_ptr<Canvas>, 2> canvases_;
+  std::array<std::unique_ptr<Canvas>, 2> canvases_;  // the view now shown: main and compare
   View view_ = View::plane2d;  // the canvas kind now shown
+  // The other views' canvases, kept (with their pan and zoom) while another view shows.
+  std::array<std::array<std::unique_ptr<Canvas>, 2>, kViewNames.size()> stashed_;
+  bool view_tab_pending_ = false;  // the view changed outside the tabs: select its tab
+  void show_view(View view);
+  void draw_view_tabs();
 
   // Timeline.
   std::size_t step_ = 0;

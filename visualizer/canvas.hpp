@@ -1,5 +1,5 @@
 // The canvas behind a small interface, one kind per view an algorithm declares: plane2d draws the
-// pixel grid and 2D geometry (pixel_canvas.cpp), orbit3d the 3D scene (ray_canvas.cpp).
+// pixel grid and 2D geometry (pixel_canvas.cpp), orbit3d the 3D scene (orbit_canvas.cpp).
 #pragma once
 #include <array>
 #include <memory>
@@ -47,7 +47,7 @@ class Canvas {
   virtual std::optional<std::array<float, 4>> cell_rect(Pixel) const { return std::nullopt; }
 };
 
-// The canvas for an algorithm's first declared view.
+// The canvas for a declared view (view_registry.cpp).
 std::unique_ptr<Canvas> make_canvas(View view, TextureHost& textures);
 
 }  // namespace sw::vis

@@ -11,7 +11,9 @@ bool same_decisions(const TraceView& a, const TraceView& b, std::size_t s) {
   for (std::uint32_t k = 0; k < x.var_end - x.var_begin; ++k) {
     const VarRecord &u = a.var_at(x.var_begin + k), &v = b.var_at(y.var_begin + k);
     if (u.is_int != v.is_int) return false;
-    if (u.is_int && a.int_value(u.slot) != b.int_value(v.slot)) return false;
+    if (u.is_int && u.count != v.count) return false;
+    for (std::uint32_t c = 0; u.is_int && c < u.count; ++c)  // integers, and every entry of an integer list
+      if (a.int_value(u.slot + c) != b.int_value(v.slot + c)) return false;
   }
   for (std::uint32_t k = 0; k < x.geo_end - x.geo_begin; ++k) {
     const GeoRecord &g = a.geo_at(x.geo_begin + k), &h = b.geo_at(y.geo_begin + k);

@@ -1,6 +1,7 @@
 // The state panel: every variable seen so far, at the current step, exactly (rationals as p/q).
 // Changed since the previous step: amber. Set again with the same value: blue. In compare mode,
 // one column per number type and their difference, which shows a float run drifting.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include "app.hpp"
@@ -20,8 +21,13 @@ ImVec4 var_colour(const VarState& v) {
 
 // The exact text, and for a fraction its decimal approximation too.
 void value_cell(const VarState& v) {
+  if (v.shape == VarShape::colour) {  // a swatch first, clamped to the displayable range
+    auto c = [](float x) { return std::clamp(x, 0.f, 1.f); };
+    ImGui::ColorButton("##rgb", ImVec4(c(v.rgb[0]), c(v.rgb[1]), c(v.rgb[2]), 1.f), ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFontSize(), ImGui::GetFontSize()));
+    ImGui::SameLine();
+  }
   ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
-  if (!v.is_int && v.text.find('/') != std::string::npos && v.text.front() != '(') {  // vectors: no single decimal
+  if (v.shape == VarShape::scalar && !v.is_int && v.text.find('/') != std::string::npos) {  // vectors and lists: no single decimal
     ImGui::SameLine();
     ImGui::TextDisabled("= %.9g", v.value);
   }

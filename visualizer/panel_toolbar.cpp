@@ -118,7 +118,7 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     } else if (a_) {
       ImGui::SameLine(0, 16);
       const bool segment = !handle_text_.empty();
-      if (view_ == View::orbit3d) ImGui::TextDisabled("%zu steps%s", a_->size(), input_.contains("ray") ? "; drag o or o + d on the canvas" : "");
+      if (view_ == View::orbit3d) ImGui::TextDisabled("%zu steps%s", a_->size(), a_->algorithm().handles.empty() ? "" : "; drag a handle on the canvas to edit the input");
       else ImGui::TextDisabled("%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment ? "; drag the handles on the canvas" : "");
     }
   }

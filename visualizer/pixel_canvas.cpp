@@ -1,9 +1,8 @@
 // [SECTION] view transforms
 // [SECTION] input: zoom, pan, drag, hover, click
 // [SECTION] drawing: texture, grid, geometry
-// [SECTION] the placeholder canvas and make_canvas
 #include "pixel_canvas.hpp"
-#include "ray_canvas.hpp"
+#include "orbit_canvas.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -146,6 +145,10 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
     dl->AddImage(layer_.texture(), to_screen(w.x0, w.y1), to_screen(w.x1, w.y0));
   }
   draw_grid(dl);
+  if (in.model) {
+    const WorldRect v = visible();
+    outline_.draw(dl, in.model, {v.x0, v.y0, v.x1, v.y1}, 3 / scale_, [&](double x, double y) { return to_screen(x, y); });
+  }
   if (in.model) draw_geometry(dl, in);
 
   // Hover: which cell, and which step plotted it.
@@ -211,29 +214,67 @@ void PixelCanvas::draw_grid(ImDrawList* dl) const {
   }
 }
 
+void PixelCanvas::paint_items(ImDrawList* dl, const TraceModel& m, std::size_t step) const {
+  const TraceView& t = m.trace();
+  // Zoomed out, the pixels are thinner than the lines: draw those faint so that the pixels show.
+  const ImU32 line_col = scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment;
+  const float thick = scale_ < 4 ? 1.f : 2.f;
+  for (std::uint32_t g : m.visible_items(step)) {
+    const GeoRecord& geo = t.geo_at(g);
+    const auto value = t.geo_value(geo);
+    const ImU32 col = value ? theme::sign_colour(*value) : line_col;
+    auto at = [&](int k) { return to_screen(t.geo_double(geo, k), t.geo_double(geo, k + 1)); };
+    ImVec2 label_at;
+    switch (geo.kind) {
+      case GeoKind::segment2:
+      case GeoKind::arrow:
+        dl->AddLine(at(0), at(2), col, thick);
+        if (geo.kind == GeoKind::arrow) dl->AddCircleFilled(at(2), 3.5f, col, 12);
+        label_at = at(2);
+        break;
+      case GeoKind::polyline:
+      case GeoKind::polygon: {
+        std::vector<ImVec2> pts;
+        for (int k = 0; k + 1 < geo.count; k += 2) pts.push_back(at(k));
+        dl->AddPolyline(pts.data(), int(pts.size()), col, geo.kind == GeoKind::polygon ? ImDrawFlags_Closed : ImDrawFlags_None, thick);
+        label_at = pts.back();
+        break;
+      }
+      case GeoKind::circle: {
+        const float r = float(t.geo_double(geo, 2) * scale_);
+        dl->AddCircle(at(0), r, col, std::clamp(int(r), 24, 512), thick);
+        label_at = ImVec2(at(0).x + r * 0.71f, at(0).y - r * 0.71f);
+        break;
+      }
+      case GeoKind::rect: dl->AddRect(at(2), at(0), col, 0, 0, thick), label_at = at(2); break;
+      case GeoKind::span: {  // row j from column i0 to i1, cells included
+        const double j = t.geo_double(geo, 0), i0 = t.geo_double(geo, 1), i1 = t.geo_double(geo, 2);
+        label_at = to_screen(i1 + 0.5, j + 0.5);
+        dl->AddRect(to_screen(i0 - 0.5, j + 0.5), to_screen(i1 + 0.5, j - 0.5), col, 0, 0, thick);
+        break;
+      }
+      case GeoKind::point2:  // the moving point is drawn by draw_geometry; these carry a value or stay
+        if (!value && geo.life == Life::step) continue;
+        dl->AddCircleFilled(at(0), 5.f, value ? col : theme::kQ, 16);
+        dl->AddCircle(at(0), 5.f, IM_COL32(0, 0, 0, 255), 16, 1.5f);
+        label_at = at(0);
+        break;
+      default: continue;  // pixels (the pixel layer) and 3D kinds
+    }
+    if (!geo.label) continue;
+    char buf[64];
+    if (value) std::snprintf(buf, sizeof buf, "%s = %.6g", geo.label, *value);
+    dl->AddText(ImVec2(label_at.x + 8, label_at.y + 2), value ? col : theme::kLabel, value ? buf : geo.label);
+  }
+}
+
 void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
   const TraceModel& m = *in.model;
   if (auto px = m.pixel_at(in.step)) {
     const ImVec2 a = to_screen(double(px->x) - 0.5, double(px->y) + 0.5), b = to_screen(double(px->x) + 0.5, double(px->y) - 0.5);
     dl->AddRect(ImVec2(a.x - 1, a.y - 1), ImVec2(b.x + 1, b.y + 1), theme::kCurrentPixel, 0, 0, 2.5f);
   }
-  const ImU32 shape_col = scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment;
-  for (const TraceModel::Shape2D& sh : m.shapes()) {
-    const auto& v = sh.values;
-    if (sh.kind == GeoKind::circle) {
-      const ImVec2 c = to_screen(v[0], v[1]);
-      dl->AddCircle(c, float(v[2] * scale_), shape_col, std::clamp(int(v[2] * scale_), 24, 512), 2.f);
-      continue;
-    }
-    std::vector<ImVec2> pts;
-    for (std::size_t k = 0; k + 1 < v.size(); k += 2) pts.push_back(to_screen(v[k], v[k + 1]));
-    dl->AddPolyline(pts.data(), int(pts.size()), shape_col, sh.kind == GeoKind::polygon ? ImDrawFlags_Closed : ImDrawFlags_None, 2.f);
-  }
-  if (auto seg = m.segment()) {
-    const ImVec2 a = to_screen((*seg)[0], (*seg)[1]), b = to_screen((*seg)[2], (*seg)[3]);
-    // Zoomed out, the pixels are thinner than the segment: draw it faint so that they show.
-    dl->AddLine(a, b, scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment, scale_ < 4 ? 1.f : 2.f);
-  }
+  paint_items(dl, m, in.step);
   // The inputs the algorithm declares as handles, where the input holds them.
   const auto& handles = m.handle_points();
   const auto& decl = m.algorithm().handles;
@@ -246,23 +287,13 @@ void PixelCanvas::draw_geometry(ImDrawList* dl, const CanvasInput& in) const {
     if (in.editable && dragging_ == static_cast<int>(h)) dl->AddCircle(at, 11.f, col, 20, 2.f);
     dl->AddText(ImVec2(at.x + 9, at.y - 20), col, decl[h].label.c_str());
   }
-  if (auto q = m.point_at(in.step)) {
+  const char* q_label = nullptr;
+  if (auto q = m.point_at(in.step, &q_label)) {
     const ImVec2 p = to_screen((*q)[0], (*q)[1]);
     dl->AddCircleFilled(p, 5.f, theme::kQ, 16);
     dl->AddCircle(p, 5.f, IM_COL32(0, 0, 0, 255), 16, 1.5f);
-    const auto names = m.var_names();  // the DDA's point is q; others stay unlabelled
-    if (std::find(names.begin(), names.end(), "qx") != names.end()) dl->AddText(ImVec2(p.x + 8, p.y + 2), theme::kQ, "q");
+    if (q_label) dl->AddText(ImVec2(p.x + 8, p.y + 2), theme::kQ, q_label);
   }
-}
-
-// [SECTION] make_canvas
-
-std::unique_ptr<Canvas> make_canvas(View view, TextureHost& textures) {
-  switch (view) {
-    case View::plane2d: return std::make_unique<PixelCanvas>(textures);
-    case View::orbit3d: return std::make_unique<RayCanvas>();
-  }
-  return std::make_unique<PixelCanvas>(textures);
 }
 
 }  // namespace sw::vis

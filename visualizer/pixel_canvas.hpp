@@ -1,6 +1,7 @@
 // The raster canvas: pixel grid texture (PixelLayer) with the continuous geometry drawn over it.
 #pragma once
 #include "canvas.hpp"
+#include "outline_layer.hpp"
 #include "pixel_layer.hpp"
 
 namespace sw::vis {
@@ -22,8 +23,11 @@ class PixelCanvas final : public Canvas {
   void handle_view_input(bool hovered, bool keys);
   void draw_grid(ImDrawList* dl) const;
   void draw_geometry(ImDrawList* dl, const CanvasInput& in) const;
+  // The step's visible 2D items other than pixels (the pixel layer draws those), by kind.
+  void paint_items(ImDrawList* dl, const TraceModel& m, std::size_t step) const;
 
   PixelLayer layer_;
+  OutlineLayer outline_;  // the exact curve, if the algorithm declares one
   double cx_ = 0, cy_ = 0, scale_ = 32;  // world centre and screen pixels per cell
   ImVec2 origin_{0, 0}, size_{1, 1};
   bool fit_pending_ = true;

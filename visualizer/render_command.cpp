@@ -1,4 +1,5 @@
 #include "render_command.hpp"
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <iostream>
@@ -38,6 +39,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_option("--to", o.to, "Last step of the GIF, inclusive (default: the last step)")->needs(gif);
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
   r->add_option("--size", o.size, "Frame size WxH (default 1280x800)");
+  r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
+  r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot; default its first)");
   return r;
 }
 
@@ -61,11 +64,22 @@ int run_render(const RenderOptions& o) {
   std::optional<Numeric> compare = lesson ? lesson->compare : std::nullopt;
   if (!o.compare.empty()) compare = parse_numeric_for(*alg, o.compare);
 
+  std::optional<View> view;
+  if (!o.view.empty()) {
+    view = parse_view(o.view);
+    if (!view || std::find(alg->views.begin(), alg->views.end(), *view) == alg->views.end()) {
+      std::string declared;
+      for (View d : alg->views) declared += (declared.empty() ? "" : ", ") + std::string(view_name(d));
+      throw InputError("--view '" + o.view + "': " + std::string(alg->id) + " declares " + declared);
+    }
+  }
+
   HeadlessHost host(w, h);
   App& app = host.app();
   const bool ok = lesson ? app.open_lesson(o.lesson) : app.open_algorithm(*alg, input, numeric, compare);
   if (!ok) throw InputError(app.error());
   if (lesson && (!o.numeric.empty() || !o.compare.empty()) && !app.open_algorithm(*alg, input, numeric, compare)) throw InputError(app.error());
+  if (view) app.set_view(*view);
   const std::size_t last = app.steps() - 1;
   auto check_step = [&](std::size_t s, const char* what) {
     if (s > last) throw InputError(std::string(what) + " " + std::to_string(s) + " is past the last step (" + std::to_string(last) + ")");
@@ -75,6 +89,7 @@ int run_render(const RenderOptions& o) {
     const std::size_t step = o.step ? *o.step : lesson && lesson->start_step ? lesson->start_step : last;
     check_step(step, "--step");
     app.set_step(step);
+    if (o.focus) app.jump_and_focus(step);
     write_png(o.out, host.render(3).data(), w, h);
     std::cerr << "stepwise: wrote step " << step << " to " << o.out << '\n';
     return 0;

@@ -1,6 +1,6 @@
 // `stepwise render`: frames of the visualizer without a window, through the OSMesa host.
 //   stepwise render (--lesson FILE | --algorithm ALG --input JSON) [--numeric M] [--compare M2]
-//                   [--step N] --out frame.png [--size WxH]
+//                   [--step N] [--view V] [--focus] --out frame.png [--size WxH]
 //   stepwise render ... --gif out.gif [--from N --to M] [--delay ms]
 #pragma once
 #include <CLI/CLI.hpp>
@@ -10,9 +10,10 @@
 namespace sw::vis {
 
 struct RenderOptions {
-  std::string lesson, algorithm, input, numeric, compare, out, gif, size = "1280x800";
+  std::string lesson, algorithm, input, numeric, compare, out, gif, size = "1280x800", view;
   std::optional<std::size_t> step, from, to;
   int delay_ms = 250;
+  bool focus = false;
 };
 
 // Adds the subcommand; main calls run_render when it was given.

@@ -21,6 +21,9 @@ inline const ImVec4 kDim = ImVec4(0.60f, 0.62f, 0.68f, 1.f);
 inline const ImVec4 kError = ImVec4(1.00f, 0.45f, 0.42f, 1.f);
 inline const ImVec4 kGood = ImVec4(0.45f, 0.85f, 0.55f, 1.f);
 inline constexpr ImU32 kLineHighlight = IM_COL32(66, 110, 190, 150);
+// A geometry item's value colours it by its sign (an edge function's side, P at a midpoint).
+inline constexpr ImU32 kPositive = IM_COL32(90, 220, 120, 255), kNegative = IM_COL32(255, 90, 80, 255), kZero = IM_COL32(255, 190, 40, 255);
+inline constexpr ImU32 sign_colour(double v) { return v > 0 ? kPositive : v < 0 ? kNegative : kZero; }
 
 // Fonts the panels use; the default font when the TTF files are missing.
 struct Fonts {

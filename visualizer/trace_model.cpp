@@ -34,29 +34,18 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
     const StepRecord& st = t.at(s);
     for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
       const GeoRecord& geo = t.geo_at(g);
+      if (geo.life != Life::step) lasting_.push_back(g);
       if (geo.kind == GeoKind::pixel) {
         const Pixel p{t.int_value(geo.slot), t.int_value(geo.slot + 1)};
         plots_.push_back({p, static_cast<std::uint32_t>(s)});
         bounds_.add(double(p.x) - 0.5, double(p.y) - 0.5);
         bounds_.add(double(p.x) + 0.5, double(p.y) + 0.5);
-      } else if (geo.kind == GeoKind::point2) {
-        bounds_.add(t.geo_double(geo, 0), t.geo_double(geo, 1));
-      } else if (geo.kind == GeoKind::segment2) {
-        const std::array<double, 4> v{t.geo_double(geo, 0), t.geo_double(geo, 1), t.geo_double(geo, 2), t.geo_double(geo, 3)};
-        if (!segment_) segment_ = v;
-        bounds_.add(v[0], v[1]);
-        bounds_.add(v[2], v[3]);
-      } else if ((geo.kind == GeoKind::circle || geo.kind == GeoKind::polyline || geo.kind == GeoKind::polygon) && shapes_.size() < kMaxShapes) {
-        // Continuous shapes the algorithm declares once (the exact circle, the exact curve).
-        Shape2D sh{geo.kind, {}};
-        for (std::uint32_t k = 0; k < geo.count; ++k) sh.values.push_back(t.geo_double(geo, static_cast<int>(k)));
-        if (geo.kind == GeoKind::circle) {
-          bounds_.add(sh.values[0] - sh.values[2], sh.values[1] - sh.values[2]);
-          bounds_.add(sh.values[0] + sh.values[2], sh.values[1] + sh.values[2]);
-        } else {
-          for (std::size_t k = 0; k + 1 < sh.values.size(); k += 2) bounds_.add(sh.values[k], sh.values[k + 1]);
-        }
-        shapes_.push_back(std::move(sh));
+      } else if (geo.kind == GeoKind::circle) {
+        const double x = t.geo_double(geo, 0), y = t.geo_double(geo, 1), r = t.geo_double(geo, 2);
+        bounds_.add(x - r, y - r);
+        bounds_.add(x + r, y + r);
+      } else if (geo_desc(geo.kind).dim == 2 && !geo_desc(geo.kind).integer) {  // points, segments, lists: coordinate pairs
+        for (std::uint32_t k = 0; k + 1 < geo.count; k += 2) bounds_.add(t.geo_double(geo, int(k)), t.geo_double(geo, int(k) + 1));
       }
     }
     // Names are string literals; compare contents so that equal names from two sites merge.
@@ -96,7 +85,7 @@ std::uint32_t TraceModel::step_of_cell(Pixel c) const {
   return it != by_cell_.end() && it->cell == c ? it->step : kNoStep;
 }
 
-std::optional<std::array<double, 2>> TraceModel::point_at(std::size_t step) const {
+std::optional<std::array<double, 2>> TraceModel::point_at(std::size_t step, const char** label) const {
   const TraceView& t = *rec_.trace;
   if (!size()) return std::nullopt;
   step = std::min(step, last());
@@ -104,7 +93,9 @@ std::optional<std::array<double, 2>> TraceModel::point_at(std::size_t step) cons
     const StepRecord& st = t.at(step - k);
     for (std::uint32_t g = st.geo_end; g-- > st.geo_begin;) {
       const GeoRecord& geo = t.geo_at(g);
-      if (geo.kind == GeoKind::point2) return std::array<double, 2>{t.geo_double(geo, 0), t.geo_double(geo, 1)};
+      if (geo.kind != GeoKind::point2) continue;
+      if (label) *label = geo.label;
+      return std::array<double, 2>{t.geo_double(geo, 0), t.geo_double(geo, 1)};
     }
   }
   return std::nullopt;
@@ -119,6 +110,28 @@ std::optional<Pixel> TraceModel::pixel_at(std::size_t step) const {
     if (geo.kind == GeoKind::pixel) return Pixel{t.int_value(geo.slot), t.int_value(geo.slot + 1)};
   }
   return std::nullopt;
+}
+
+std::vector<std::uint32_t> TraceModel::visible_items(std::size_t step) const {
+  std::vector<std::uint32_t> out;
+  if (!size()) return out;
+  const TraceView& t = *rec_.trace;
+  const StepRecord& st = t.at(std::min(step, last()));
+  auto add = [&](std::uint32_t g) {
+    const GeoRecord& geo = t.geo_at(g);
+    if (geo.life == Life::replace && geo.label)  // it takes the place of the earlier item so labelled
+      for (std::uint32_t& k : out)
+        if (k != kNoStep && t.geo_at(k).life == Life::replace && t.geo_at(k).label && std::strcmp(t.geo_at(k).label, geo.label) == 0) k = kNoStep;
+    out.push_back(g);
+  };
+  // Geometry indices grow with the step, so the lasting items before this step are a prefix.
+  for (std::uint32_t g : lasting_) {
+    if (g >= st.geo_begin) break;
+    add(g);
+  }
+  for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) add(g);
+  std::erase(out, kNoStep);
+  return out;
 }
 
 std::vector<VarState> TraceModel::state_at(std::size_t step) const {
@@ -137,6 +150,9 @@ std::vector<VarState> TraceModel::state_at(std::size_t step) const {
     const VarRecord& v = t.var_at(now[k]);
     VarState vs{names_[k], t.value_text(v), t.value_double(v), v.is_int, now[k] >= st.var_begin && now[k] < st.var_end, false};
     vs.changed = before[k] == kNoStep || (vs.set_here && t.value_text(t.var_at(before[k])) != vs.text);
+    vs.shape = v.shape;
+    if (v.shape == VarShape::colour)
+      for (std::uint32_t c = 0; c < 3; ++c) vs.rgb[c] = static_cast<float>(t.component_double(v, c));
     out.push_back(std::move(vs));
   }
   return out;

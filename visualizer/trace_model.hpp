@@ -32,6 +32,8 @@ struct VarState {
   bool is_int = false;
   bool set_here = false;  // recorded by this very step
   bool changed = false;   // differs from its value before this step (or new)
+  VarShape shape = VarShape::scalar;
+  std::array<float, 3> rgb{};  // a colour's components
 };
 
 inline constexpr std::uint32_t kNoStep = 0xffffffffu;
@@ -56,22 +58,20 @@ class TraceModel {
   // Cells and continuous geometry of the whole trace.
   const WorldRect& bounds() const { return bounds_; }
 
-  // The first segment in the trace (the input segment for lines), as x0 y0 x1 y1.
-  std::optional<std::array<double, 4>> segment() const { return segment_; }
-  // Circles, polylines and polygons the trace declares, as doubles (at most kMaxShapes).
-  struct Shape2D {
-    GeoKind kind;
-    std::vector<double> values;
-  };
-  static constexpr std::size_t kMaxShapes = 64;
   // Each declared handle's position (Algorithm::handles, same order); nothing for other kinds
   // than point2 or when the input does not hold it.
   const std::vector<std::optional<std::array<double, 2>>>& handle_points() const { return handles_; }
-  const std::vector<Shape2D>& shapes() const { return shapes_; }
-  // The latest 2D point at or before `step` (the q of a DDA), searching back a bounded way.
-  std::optional<std::array<double, 2>> point_at(std::size_t step) const;
+  // The latest 2D point at or before `step` (the q of a DDA), searching back a bounded way; its
+  // label, if any, goes to *label.
+  std::optional<std::array<double, 2>> point_at(std::size_t step, const char** label = nullptr) const;
   // The pixel geometry carried by `step`, if any.
   std::optional<Pixel> pixel_at(std::size_t step) const;
+
+  // The geometry items a view shows at `step` (indices for trace().geo_at), by their lifetimes:
+  // the kept items of steps <= step, the latest of each replaced label, then the step's own items.
+  std::vector<std::uint32_t> visible_items(std::size_t step) const;
+  // Every kept or replacing item of the whole trace, in order (what a view frames).
+  std::span<const std::uint32_t> lasting_items() const { return lasting_; }
 
   // Every variable seen up to `step` (in first-appearance order) with its latest value.
   std::vector<VarState> state_at(std::size_t step) const;
@@ -91,9 +91,8 @@ class TraceModel {
   std::vector<PlotEvent> plots_;
   std::vector<PlotEvent> by_cell_;  // sorted by cell, for hover lookups
   WorldRect bounds_;
-  std::optional<std::array<double, 4>> segment_;
-  std::vector<Shape2D> shapes_;
   std::vector<std::optional<std::array<double, 2>>> handles_;
+  std::vector<std::uint32_t> lasting_;  // geometry indices with life keep or replace, by step
   std::vector<std::string_view> names_;
   std::vector<std::uint8_t> name_of_var_;        // var record -> index into names_
   std::vector<std::uint32_t> checkpoints_;       // names_.size() entries per checkpoint

@@ -4,16 +4,18 @@
 #include <exception>
 #include <ostream>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+#include "core/emitters.hpp"
 #include "core/number.hpp"
 #include "core/step.hpp"
 #include "core/vec.hpp"
 
 namespace sw {
 
-template <class Num> class JsonlProbe {
+template <class Num> class JsonlProbe : public GeometryEmitters<JsonlProbe<Num>, Num> {
  public:
   static constexpr bool on = true;
 
@@ -47,6 +49,13 @@ template <class Num> class JsonlProbe {
   JsonlProbe& idx(const char* name, std::int64_t v) { return add_var(name, std::to_string(v)); }
   JsonlProbe& vec(const char* name, const Vec2<Num>& v) { return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ']'); }
   JsonlProbe& vec(const char* name, const Vec3<Num>& v) { return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ',' + json_value(v.z) + ']'); }
+  JsonlProbe& colour(const char* name, const Vec3<Num>& c) {
+    return add_var(name, "{\"rgb\":[" + json_value(c.x) + ',' + json_value(c.y) + ',' + json_value(c.z) + "]}");
+  }
+  JsonlProbe& list(const char* name, std::span<const Num> xs) { return add_var(name, json_list(xs, [](const Num& x) { return json_value(x); })); }
+  JsonlProbe& ilist(const char* name, std::span<const std::int64_t> xs) {
+    return add_var(name, json_list(xs, [](std::int64_t x) { return std::to_string(x); }));
+  }
   JsonlProbe& pixel(Pixel p) { return igeo(GeoKind::pixel, p.x, p.y); }
   JsonlProbe& span(std::int64_t j, std::int64_t i0, std::int64_t i1) { return igeo(GeoKind::span, j, i0, i1); }
   template <class... I> JsonlProbe& igeo(GeoKind kind, I... values) {
@@ -74,8 +83,13 @@ template <class Num> class JsonlProbe {
     geo_ += "]}";
     return *this;
   }
-  JsonlProbe& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
-  JsonlProbe& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
+
+  // Modifiers of the item just emitted (probe.hpp): written as its "label", "life" and "value".
+  JsonlProbe& label(const char* text) { return item_member("label", '"' + std::string(text) + '"'); }
+  JsonlProbe& keep() { return life(Life::keep); }
+  JsonlProbe& replace() { return life(Life::replace); }
+  JsonlProbe& life(Life l) { return item_member("life", '"' + std::string(life_name(l)) + '"'); }
+  JsonlProbe& value(const Num& v) { return item_member("value", json_value(v)); }
 
   void enter(std::string_view id, const Listing&) { scopes_.push_back(id); }
   void leave() { scopes_.pop_back(); }
@@ -98,6 +112,22 @@ template <class Num> class JsonlProbe {
     line_ += name;
     line_ += "\":";
     line_ += text;
+    return *this;
+  }
+  template <class T, class F> static std::string json_list(std::span<const T> xs, F text) {
+    if (xs.size() > kMaxListLength) throw std::length_error("a list variable of more than 64 entries");
+    std::string t = "[";
+    for (std::size_t i = 0; i < xs.size(); ++i) t += (i ? "," : "") + text(xs[i]);
+    return t + ']';
+  }
+  // Reopens the last item's object (it ends in '}') for one more member.
+  JsonlProbe& item_member(const char* key, const std::string& text) {
+    geo_.pop_back();
+    geo_ += ",\"";
+    geo_ += key;
+    geo_ += "\":";
+    geo_ += text;
+    geo_ += '}';
     return *this;
   }
   void open_geo(GeoKind kind) {

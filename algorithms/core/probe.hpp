@@ -4,13 +4,16 @@
 //  - Recorder<Num>: in memory, random access (the app steps backward by indexing).
 //  - JsonlProbe<Num> (jsonl_probe.hpp): streams JSON lines; memory stays flat.
 #pragma once
+#include <concepts>
 #include <cstdint>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "core/emitters.hpp"
 #include "core/number.hpp"
 #include "core/step.hpp"
 #include "core/vec.hpp"
@@ -21,6 +24,23 @@ struct NoProbe {
   static constexpr bool on = false;
 };
 
+// What an algorithm asks of its number type: small integer constants, the ring operations and an
+// order. float, double, int64, Rational, Interval and Mag model it.
+template <class N>
+concept NumberType = std::copyable<N> && std::constructible_from<N, int> && requires(const N a, const N b) {
+  { N(a + b) };
+  { N(a - b) };
+  { N(a * b) };
+  { a < b } -> std::convertible_to<bool>;
+};
+
+// Where steps go: NoProbe (off: no step is evaluated) or a probe with step(line, kind) whose
+// result takes the recording calls (Recorder, JsonlProbe).
+template <class P>
+concept StepProbe = requires {
+  { P::on } -> std::convertible_to<bool>;
+} && (!P::on || requires(P& p) { p.step(std::uint32_t{1}, StepKind::init); });
+
 // Steps as stored: ranges into the shared variable and geometry arrays.
 struct StepRecord {
   std::uint32_t line;   // in the listing of `scope`
@@ -28,16 +48,24 @@ struct StepRecord {
   std::uint8_t scope;   // 0: the algorithm's own listing; k: the callee scope_listing(k)
   std::uint32_t var_begin, var_end, geo_begin, geo_end;
 };
+// A variable is a scalar, a vector of 2 or 3 numbers, a colour (r, g, b in [0, 1] by convention)
+// or a short list (an edge-table row, a traversal stack) of numbers or integers.
+enum class VarShape : std::uint8_t { scalar, vector, colour, list };
 struct VarRecord {
   const char* name;     // a string literal from the algorithm
   std::uint32_t slot;   // into the number or the integer store
   bool is_int;
-  std::uint8_t count;   // 1: a scalar; 2 or 3: a vector (or colour) of that many numbers
+  std::uint8_t count;   // how many values from slot: 1 for a scalar, 2 or 3 for a vector, 3 for a colour
+  VarShape shape = VarShape::scalar;
 };
 struct GeoRecord {
   GeoKind kind;
-  std::uint16_t count;  // geo_arity(kind), or the list's length for variable kinds (< 2^16)
-  std::uint32_t slot;   // first of `count` values (integers for integer kinds)
+  Life life = Life::step;
+  std::uint16_t count;        // geo_arity(kind), or the list's length for variable kinds (< 2^16)
+  std::uint32_t slot;         // first of `count` values (integers for integer kinds)
+  const char* label = nullptr;  // a string literal from the algorithm, or none
+  std::uint32_t value = kNoValue;  // the number store's slot of the item's value (a colour key), or none
+  static constexpr std::uint32_t kNoValue = 0xffffffffu;
 };
 
 // The number-independent part of a recorded trace, with virtual access to the numbers. The
@@ -58,20 +86,26 @@ class TraceView {
   const VarRecord& var_at(std::uint32_t v) const { return vars_[v]; }
   const GeoRecord& geo_at(std::uint32_t g) const { return geos_[g]; }
   std::int64_t int_value(std::uint32_t slot) const { return ints_[slot]; }
-  // A scalar's value (a vector's first component), and the lossless text ("(x, y, z)" for vectors).
-  double value_double(const VarRecord& v) const {
-    return v.is_int ? static_cast<double>(ints_[v.slot]) : num_double(v.slot);
+  // Component k of a variable as a double (a scalar is component 0).
+  double component_double(const VarRecord& v, std::uint32_t k) const {
+    return v.is_int ? static_cast<double>(ints_[v.slot + k]) : num_double(v.slot + k);
   }
+  // A scalar's value (a vector's first component; 0 for an empty list).
+  double value_double(const VarRecord& v) const { return v.count ? component_double(v, 0) : 0; }
+  // The lossless text: "(x, y, z)" for vectors, "rgb(r, g, b)" for colours, "[a, b]" for lists.
   std::string value_text(const VarRecord& v) const {
-    if (v.is_int) return std::to_string(ints_[v.slot]);
-    if (v.count == 1) return num_text(v.slot);
-    std::string t = "(";
-    for (std::uint32_t k = 0; k < v.count; ++k) t += (k ? ", " : "") + num_text(v.slot + k);
-    return t + ")";
+    auto part = [&](std::uint32_t k) { return v.is_int ? std::to_string(ints_[v.slot + k]) : num_text(v.slot + k); };
+    if (v.shape == VarShape::scalar) return part(0);
+    std::string t = v.shape == VarShape::colour ? "rgb(" : v.shape == VarShape::list ? "[" : "(";
+    for (std::uint32_t k = 0; k < v.count; ++k) t += (k ? ", " : "") + part(k);
+    return t + (v.shape == VarShape::list ? "]" : ")");
   }
   // Coordinate k of a geometry item, as a double.
   double geo_double(const GeoRecord& g, int k) const {
     return geo_desc(g.kind).integer ? static_cast<double>(ints_[g.slot + k]) : num_double(g.slot + k);
+  }
+  std::optional<double> geo_value(const GeoRecord& g) const {
+    return g.value == GeoRecord::kNoValue ? std::nullopt : std::optional(num_double(g.value));
   }
 
  protected:
@@ -86,7 +120,7 @@ class TraceView {
   std::vector<Scope> scopes_;
 };
 
-template <class Num> class Recorder final : public TraceView {
+template <class Num> class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num>, Num> {
  public:
   static constexpr bool on = true;
 
@@ -141,13 +175,33 @@ template <class Num> class Recorder final : public TraceView {
   // A vector variable: its components under one name.
   Recorder& vec(const char* name, const Vec2<Num>& v) { return components(name, {v.x, v.y}); }
   Recorder& vec(const char* name, const Vec3<Num>& v) { return components(name, {v.x, v.y, v.z}); }
+  Recorder& colour(const char* name, const Vec3<Num>& rgb) {
+    components(name, {rgb.x, rgb.y, rgb.z});
+    vars_.back().shape = VarShape::colour;
+    return *this;
+  }
+  // A short list (at most kMaxListLength entries) of numbers, or of integers.
+  Recorder& list(const char* name, std::span<const Num> xs) {
+    check_list(xs.size());
+    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::list});
+    nums_.insert(nums_.end(), xs.begin(), xs.end());
+    steps_.back().var_end++;
+    return *this;
+  }
+  Recorder& ilist(const char* name, std::span<const std::int64_t> xs) {
+    check_list(xs.size());
+    vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true, static_cast<std::uint8_t>(xs.size()), VarShape::list});
+    ints_.insert(ints_.end(), xs.begin(), xs.end());
+    steps_.back().var_end++;
+    return *this;
+  }
   Recorder& pixel(Pixel p) { return igeo(GeoKind::pixel, p.x, p.y); }
   // A run of pixels on row j from column i0 to i1 (both included).
   Recorder& span(std::int64_t j, std::int64_t i0, std::int64_t i1) { return igeo(GeoKind::span, j, i0, i1); }
   // Any number-valued geometry: the values in the order SW_GEO_KINDS documents.
   template <class... V> Recorder& geo(GeoKind kind, const V&... values) {
     static_assert(sizeof...(V) > 0);
-    geos_.push_back({kind, sizeof...(V), static_cast<std::uint32_t>(nums_.size())});
+    geos_.push_back({kind, Life::step, sizeof...(V), static_cast<std::uint32_t>(nums_.size())});
     (nums_.push_back(values), ...);
     steps_.back().geo_end++;
     return *this;
@@ -155,25 +209,41 @@ template <class Num> class Recorder final : public TraceView {
   // A variable-length kind (polyline, polygon): the points' coordinates in order.
   Recorder& geo_list(GeoKind kind, std::span<const Vec2<Num>> points) {
     if (points.size() > 32767) throw std::length_error("a geometry list of more than 32767 points");
-    geos_.push_back({kind, static_cast<std::uint16_t>(2 * points.size()), static_cast<std::uint32_t>(nums_.size())});
+    geos_.push_back({kind, Life::step, static_cast<std::uint16_t>(2 * points.size()), static_cast<std::uint32_t>(nums_.size())});
     for (const auto& p : points) nums_.push_back(p.x), nums_.push_back(p.y);
     steps_.back().geo_end++;
     return *this;
   }
-  Recorder& point(const Vec2<Num>& p) { return geo(GeoKind::point2, p.x, p.y); }
-  Recorder& point(const Vec3<Num>& p) { return geo(GeoKind::point3, p.x, p.y, p.z); }
 
   Recorder& components(const char* name, std::initializer_list<Num> xs) {
-    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size())});
+    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::vector});
     for (const Num& x : xs) nums_.push_back(x);
     steps_.back().var_end++;
     return *this;
   }
   // An integer-valued geometry item (pixel, span).
   template <class... I> Recorder& igeo(GeoKind kind, I... values) {
-    geos_.push_back({kind, sizeof...(I), static_cast<std::uint32_t>(ints_.size())});
+    geos_.push_back({kind, Life::step, sizeof...(I), static_cast<std::uint32_t>(ints_.size())});
     (ints_.push_back(static_cast<std::int64_t>(values)), ...);
     steps_.back().geo_end++;
+    return *this;
+  }
+
+  // Modifiers of the geometry item just emitted: its label (a string literal), its lifetime, and
+  // a value a view colours it by (an edge function's sign, a distance).
+  Recorder& label(const char* text) {
+    geos_.back().label = text;
+    return *this;
+  }
+  Recorder& keep() { return life(Life::keep); }
+  Recorder& replace() { return life(Life::replace); }
+  Recorder& life(Life l) {
+    geos_.back().life = l;
+    return *this;
+  }
+  Recorder& value(const Num& v) {
+    geos_.back().value = static_cast<std::uint32_t>(nums_.size());
+    nums_.push_back(v);
     return *this;
   }
 
@@ -202,6 +272,9 @@ template <class Num> class Recorder final : public TraceView {
 
  private:
   std::vector<Num> nums_;
+  static void check_list(std::size_t n) {
+    if (n > kMaxListLength) throw std::length_error("a list variable of more than 64 entries");
+  }
   // A summarised callee's steps go to a scratch recorder, emptied at each step, so that the
   // recording calls need no check of their own.
   [[gnu::cold, gnu::noinline]] Recorder& discarded(std::uint32_t line, StepKind kind) {

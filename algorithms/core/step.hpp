@@ -81,6 +81,20 @@ constexpr bool geo_count_ok(GeoKind k, std::size_t n) {
   return d.arity ? n == d.arity : n >= d.dim && n % d.dim == 0;
 }
 
+// A list variable (an edge-table row, a traversal stack) holds at most this many entries.
+inline constexpr std::size_t kMaxListLength = 64;
+
+// How long a geometry item stays on a view: this step only, from its step on, or from its step on
+// replacing the earlier item with the same label (a running interval, the current estimate).
+enum class Life : std::uint8_t { step, keep, replace };
+inline constexpr std::array<std::string_view, 3> kLifeNames = {"step", "keep", "replace"};
+constexpr std::string_view life_name(Life l) { return kLifeNames[static_cast<std::size_t>(l)]; }
+inline std::optional<Life> parse_life(std::string_view s) {
+  for (std::size_t i = 0; i < kLifeNames.size(); ++i)
+    if (kLifeNames[i] == s) return static_cast<Life>(i);
+  return std::nullopt;
+}
+
 // A line of a pseudocode listing written by us: a stable name (lessons and tests address lines by
 // it) and the text shown.
 struct ListingLine {

@@ -43,7 +43,7 @@ struct BezierForwardDiff {
 #undef SW_LINES_BEZIER_FORWARD_DIFF
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& probe) {
   using L = BezierForwardDiff;
   std::array<Vec2<Num>, 4> q;
@@ -52,7 +52,7 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
     std::vector<Vec2<Num>> curve;  // the curve itself, for the canvas: 8 points per segment, at most 512
     const std::int64_t m = std::min<std::int64_t>(8 * b.n, 512);
     for (std::int64_t k = 0; k <= m; ++k) curve.push_back(bezier_at(b.p, Num(Num(k) / Num(m))));
-    probe.step(L::samples, StepKind::init).vec("q0", q[0]).vec("q1", q[1]).vec("q2", q[2]).vec("q3", q[3]).geo_list(GeoKind::polyline, curve);
+    probe.step(L::samples, StepKind::init).vec("q0", q[0]).vec("q1", q[1]).vec("q2", q[2]).vec("q3", q[3]).geo_list(GeoKind::polyline, curve).keep();
   }
   const Vec2<Num> e0 = q[1] - q[0], e1 = q[2] - q[1], e2 = q[3] - q[2];
   Vec2<Num> d1 = e0, d2 = e1 - e0;
@@ -62,7 +62,7 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
   for (std::int64_t k = 0; k < b.n; ++k) {  // bounded: n is validated
     const Vec2<Num> next = p + d1;
     if constexpr (Probe::on) {
-      probe.step(L::segment, StepKind::advance).idx("k", k).geo(GeoKind::segment2, p.x, p.y, next.x, next.y);
+      probe.step(L::segment, StepKind::advance).idx("k", k).segment(p, next);
       probe.enter(lines::DdaLine::id, lines::DdaLine::listing());
     }
     (void)lines::dda_line<Num>(p, next, out, probe);

@@ -23,7 +23,7 @@ struct CircleInterior {
 #undef SW_LINES_CIRCLE_INTERIOR
 };
 
-template <class Num, class Probe = NoProbe> void circle_interior(const CircleInput& c, std::vector<Pixel>& out, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> void circle_interior(const CircleInput& c, std::vector<Pixel>& out, Probe& probe) {
   const Num r(c.r);
   circle_octant_walk<CircleInterior, Num>(c, {Num(0), Num(Num(1) - Num(2) * r), Num(1), Num(2), Num(2)}, out, probe);
 }

@@ -25,7 +25,7 @@ struct CircleMidpoint {
 #undef SW_LINES_CIRCLE_MIDPOINT
 };
 
-template <class Num, class Probe = NoProbe> void circle_midpoint(const CircleInput& c, std::vector<Pixel>& out, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> void circle_midpoint(const CircleInput& c, std::vector<Pixel>& out, Probe& probe) {
   const Num r(c.r);
   circle_octant_walk<CircleMidpoint, Num>(c, {Num(Num(1) - Num(4) * r), Num(Num(8) - Num(8) * r), Num(4), Num(8), Num(8)}, out, probe);
 }

@@ -39,10 +39,10 @@ inline int mirror_images(const CircleInput& c, std::int64_t x, std::int64_t y, s
 
 // L is the algorithm's listing (start, init, test, plot, step_y, decide, step_x, done) and names
 // the tracked value and its steps (kP, kPx, kPy) as the listing does.
-template <class L, class Num, class Probe>
+template <class L, NumberType Num, StepProbe Probe>
 void circle_octant_walk(const CircleInput& c, OctantStart<Num> s, std::vector<Pixel>& out, Probe& probe) {
   std::int64_t x = -c.r, y = 0;
-  if constexpr (Probe::on) probe.step(L::start, StepKind::init).idx("x", x).idx("y", y).geo(GeoKind::circle, Num(c.cx), Num(c.cy), Num(c.r));
+  if constexpr (Probe::on) probe.step(L::start, StepKind::init).idx("x", x).idx("y", y).circle(Vec2<Num>{Num(c.cx), Num(c.cy)}, Num(c.r)).keep();
   if constexpr (Probe::on) probe.step(L::init, StepKind::init).num(L::kP, s.p).num(L::kPx, s.px).num(L::kPy, s.py);
   std::array<Pixel, 8> img;
   // Each pass moves y up by one and the octant holds at most r + 1 rows: bounded.
@@ -58,7 +58,10 @@ void circle_octant_walk(const CircleInput& c, OctantStart<Num> s, std::vector<Pi
     s.py = Num(s.py + s.pyy);
     if constexpr (Probe::on) probe.step(L::step_y, StepKind::advance).idx("y", y).num(L::kP, s.p).num(L::kPy, s.py);
     const bool inward = s.p > Num(0);
-    if constexpr (Probe::on) probe.step(L::decide, StepKind::decide).num(L::kP, s.p).idx("inward", inward);
+    if constexpr (Probe::on) {  // the two candidates on the row, coloured by the sign that decides between them
+      const Vec2<Num> stay{Num(c.cx + x), Num(c.cy + y)}, inner{Num(c.cx + x + 1), Num(c.cy + y)};
+      probe.step(L::decide, StepKind::decide).num(L::kP, s.p).idx("inward", inward).segment(stay, inner).label(L::kP).value(s.p);
+    }
     if (inward) {
       ++x;
       s.p = Num(s.p + s.px);

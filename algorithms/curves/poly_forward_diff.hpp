@@ -49,13 +49,13 @@ struct PolyForwardDiff {
 #undef SW_LINES_POLY_FORWARD_DIFF
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   using L = PolyForwardDiff;
   std::array<Num, 4> y;
   for (int k = 0; k < 4; ++k) y[k] = num::polynomial(p.c, Num(Num(p.xs) + Num(k)));
   if constexpr (Probe::on)
-    probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]).geo_list(GeoKind::polyline, curve_samples(p));
+    probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]).geo_list(GeoKind::polyline, curve_samples(p)).keep();
   const Num e0 = Num(y[1] - y[0]), e1 = Num(y[2] - y[1]), e2 = Num(y[3] - y[2]);
   Num d1 = e0, d2 = Num(e1 - e0);
   const Num d3 = Num(Num(e2 - e1) - d2);

@@ -17,14 +17,14 @@ struct PolyHorner {
 #undef SW_LINES_POLY_HORNER
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 void poly_horner(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   using L = PolyHorner;
   for (std::int64_t x = p.xs; x < p.xe; ++x) {  // bounded: xe - xs is validated
     const Num y = num::polynomial(p.c, Num(x));
     if constexpr (Probe::on) {
       auto& st = probe.step(L::eval, StepKind::advance).idx("x", x).num("y", y);
-      if (x == p.xs) st.geo_list(GeoKind::polyline, curve_samples(p));  // the exact curve, once
+      if (x == p.xs) st.geo_list(GeoKind::polyline, curve_samples(p)).keep();  // the exact curve, once
     }
     const Pixel px{x, num::floor_int(Num(y + Num(0.5)))};
     out.push_back(px);

@@ -30,11 +30,11 @@ struct BresenhamLine {
 };
 
 // Precondition: p0 and p1 have integer coordinates (the caller validates this).
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 bool bresenham_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe) {
   using L = BresenhamLine;
   const Vec2<Num> d = p1 - p0;
-  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).geo(GeoKind::segment2, p0.x, p0.y, p1.x, p1.y);
+  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).segment(p0, p1).keep();
   const int a = num::abs(d.x) > num::abs(d.y) ? 0 : 1, b = 1 - a;
   if constexpr (Probe::on) probe.step(L::major, StepKind::decide).idx("a", a);
   const int sa = num::sign(d[a]), sb = num::sign(d[b]);

@@ -31,11 +31,11 @@ struct DdaGridWalk {
 
 // Appends the cells to `out` in walk order. Returns false if the loop bound stopped the walk
 // (only when the number type cannot advance tMax, e.g. float with |d| > 2^24).
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe) {
   using L = DdaGridWalk;
   const Vec2<Num> d = p1 - p0;
-  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).geo(GeoKind::segment2, p0.x, p0.y, p1.x, p1.y);
+  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).segment(p0, p1).keep();
   if (d.x == Num(0) && d.y == Num(0)) {
     if constexpr (Probe::on) probe.step(L::done, StepKind::done);
     return true;

@@ -30,11 +30,11 @@ struct DdaLine {
 
 // Appends the pixels to `out`. Returns false if the loop bound stopped the walk (this happens only
 // when the number type cannot represent q_a + 1, e.g. float beyond 2^24).
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe) {
   using L = DdaLine;
   Vec2<Num> d = p1 - p0;
-  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).geo(GeoKind::segment2, p0.x, p0.y, p1.x, p1.y);
+  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).segment(p0, p1).keep();
   const int a = num::abs(d.x) > num::abs(d.y) ? 0 : 1;
   if constexpr (Probe::on) probe.step(L::major, StepKind::decide).idx("a", a);
   const bool swapped = d[a] < Num(0);
@@ -54,19 +54,19 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
   const Num first = Num(num::ceil_int(p0[a]));
   const Num offset = Num(first - p0[a]);
   Vec2<Num> q = p0 + offset * dp;
-  if constexpr (Probe::on) probe.step(L::offset, StepKind::init).num("dp0x", Num(offset * dp.x)).num("dp0y", Num(offset * dp.y)).num("qx", q.x).num("qy", q.y).point(q);
+  if constexpr (Probe::on) probe.step(L::offset, StepKind::init).num("dp0x", Num(offset * dp.x)).num("dp0y", Num(offset * dp.y)).num("qx", q.x).num("qy", q.y).point(q).label("q");
   // Columns in [p0_a, p1_a): ceil(p1_a) - ceil(p0_a) of them; one more pass detects a stall.
   const std::int64_t bound = num::ceil_int(p1[a]) - num::ceil_int(p0[a]) + 1;
   for (std::int64_t n = 0; n < bound; ++n) {
     if (!(q[a] < p1[a])) {
-      if constexpr (Probe::on) probe.step(L::done, StepKind::done).num("qx", q.x).num("qy", q.y).point(q);
+      if constexpr (Probe::on) probe.step(L::done, StepKind::done).num("qx", q.x).num("qy", q.y).point(q).label("q");
       return true;
     }
     const Pixel px{num::floor_int(Num(q.x + Num(0.5))), num::floor_int(Num(q.y + Num(0.5)))};
     out.push_back(px);
-    if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).num("qx", q.x).num("qy", q.y).idx("i", px.x).idx("j", px.y).pixel(px).point(q);
+    if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).num("qx", q.x).num("qy", q.y).idx("i", px.x).idx("j", px.y).pixel(px).point(q).label("q");
     q = q + dp;
-    if constexpr (Probe::on) probe.step(L::advance, StepKind::advance).num("qx", q.x).num("qy", q.y).point(q);
+    if constexpr (Probe::on) probe.step(L::advance, StepKind::advance).num("qx", q.x).num("qy", q.y).point(q).label("q");
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).num("qx", q.x).num("qy", q.y).idx("bound_hit", 1);
   return false;

@@ -43,14 +43,16 @@ struct CameraRayAlgo {
 #undef SW_LINES_CAMERA_RAY_ALGO
 };
 
-template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {
   using L = CameraRayAlgo;
   CameraRay<Num> out;
   auto unit = [](const Vec3<Num>& a) { return Num(Num(1) / num::sqrt_of(dot(a, a))) * a; };
   const Vec3<Num> n = unit(c.vpn), u = unit(cross(c.vup, n)), v = cross(n, u);
   if constexpr (Probe::on)
     probe.step(L::frame, StepKind::init).num("ux", u.x).num("uy", u.y).num("uz", u.z).num("vx", v.x).num("vy", v.y).num("vz", v.z)
-        .num("nx", n.x).num("ny", n.y).num("nz", n.z);
+        .num("nx", n.x).num("ny", n.y).num("nz", n.z).point(c.eye).label("eye").keep()
+        .segment(c.eye, Vec3<Num>(c.eye + u)).label("u").keep().segment(c.eye, Vec3<Num>(c.eye + v)).label("v").keep()
+        .segment(c.eye, Vec3<Num>(c.eye + n)).label("n").keep();
   const Num w = Num(double(c.width)), h = Num(double(c.height)), half(0.5);
   const Num sx = Num(Num(2) * Num(Num(double(i)) + half) / w - Num(1)), sy = Num(Num(1) - Num(2) * Num(Num(double(j)) + half) / h);
   if constexpr (Probe::on) probe.step(L::screen, StepKind::init).idx("i", i).idx("j", j).num("sx", sx).num("sy", sy);
@@ -60,7 +62,7 @@ template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Came
     if constexpr (Probe::on) probe.step(L::window, StepKind::init).num("hh", hh).num("hw", hw);
     const Vec3<Num> p1 = c.eye - c.dist * n + Num(sx * hw) * u + Num(sy * hh) * v;
     dir = p1 - c.eye;
-    if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p1);
+    if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p1).label("P1").keep();
   } else if (c.projection == Projection::fisheye) {
     const Num x = Num(sx * w / h), rho = num::sqrt_of(Num(x * x + sy * sy));
     const Num theta = Num(rho * c.fov * half), phi = num::atan2(sy, x);
@@ -78,7 +80,7 @@ template <class Num, class Probe = NoProbe> CameraRay<Num> camera_ray(const Came
   }
   out.valid = true;
   out.ray = {c.eye, dir};
-  if constexpr (Probe::on) probe.step(L::ray, StepKind::done).num("dx", dir.x).num("dy", dir.y).num("dz", dir.z).geo(GeoKind::ray3, c.eye.x, c.eye.y, c.eye.z, dir.x, dir.y, dir.z);
+  if constexpr (Probe::on) probe.step(L::ray, StepKind::done).num("dx", dir.x).num("dy", dir.y).num("dz", dir.z).ray(c.eye, dir).label("ray").keep();
   return out;
 }
 

@@ -33,13 +33,12 @@ struct RayBox {
 #undef SW_LINES_RAY_BOX
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline BoxHit<Num> ray_box(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) {
   using L = RayBox;
   BoxHit<Num> out;
   if constexpr (Probe::on)
-    probe.step(L::init, StepKind::init).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
-        .geo(GeoKind::box3, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    probe.step(L::init, StepKind::init).ray(r.o, r.d).keep().box(lo, hi).keep();
   bool bounded = false;  // false while t_near and t_far are still -inf and +inf
   Num tn{}, tf{};
 #pragma GCC unroll 3
@@ -66,7 +65,12 @@ template <class Num, class Probe = NoProbe>
       tn = num::select(t1 > tn, t1, tn);
       tf = num::select(t2 < tf, t2, tf);
     }
-    if constexpr (Probe::on) probe.step(L::clip, StepKind::advance).idx("k", k).num("t1", t1).num("t2", t2).num("t_near", tn).num("t_far", tf);
+    if constexpr (Probe::on) {
+      static constexpr const char* slab[3] = {"x slab", "y slab", "z slab"};
+      probe.step(L::clip, StepKind::advance).idx("k", k).num("t1", t1).num("t2", t2).num("t_near", tn).num("t_far", tf)
+          .segment(Vec3<Num>(r.o + t1 * r.d), Vec3<Num>(r.o + t2 * r.d)).label(slab[k]).keep()
+          .segment(Vec3<Num>(r.o + tn * r.d), Vec3<Num>(r.o + tf * r.d)).label("[t_near, t_far]").value(Num(tf - tn)).replace();
+    }
   }
   // d != 0, so some axis bounded the interval.
   out.t_near = tn, out.t_far = tf;
@@ -77,7 +81,7 @@ template <class Num, class Probe = NoProbe>
   if constexpr (Probe::on) {
     if (empty) probe.step(L::empty, StepKind::miss);
     else if (behind) probe.step(L::exit, StepKind::miss);
-    else probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
+    else probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   }
   return out;
 }

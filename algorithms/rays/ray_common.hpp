@@ -1,6 +1,7 @@
 // Shared pieces of the ray family: the ray type and the exact-mode root that keeps sphere roots
 // free of cancellation. Square roots and the other functions are the core's (core/functions.hpp). Semantics: docs/rays/semantics.md.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -27,6 +28,13 @@ template <class Num> num::Rooted<Num> add_root(const Num& p, int s, const Num& q
   } else {
     return {num::select(s > 0, Num(p + r.value), Num(p - r.value)), false};
   }
+}
+
+// A triangle test's scene, kept on the view: the ray, the triangle and its named vertices. `step`
+// is what the probe's step() returned (a summarised callee's steps go elsewhere).
+template <class Step, class Num> void record_triangle_scene(Step& step, const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v) {
+  step.ray(r.o, r.d).keep().triangle(v[0], v[1], v[2]).keep();
+  step.point(v[0]).label("v0").keep().point(v[1]).label("v1").keep().point(v[2]).label("v2").keep();
 }
 
 }  // namespace sw::ray

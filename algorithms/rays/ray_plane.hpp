@@ -26,14 +26,13 @@ struct RayPlane {
 #undef SW_LINES_RAY_PLANE
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline PlaneHit<Num> ray_plane(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) {
   using L = RayPlane;
   PlaneHit<Num> out;
   const Num den = dot(n, r.d);
   if constexpr (Probe::on)
-    probe.step(L::denom, StepKind::decide).num("den", den).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
-        .geo(GeoKind::plane, p.x, p.y, p.z, n.x, n.y, n.z);
+    probe.step(L::denom, StepKind::decide).num("den", den).ray(r.o, r.d).keep().plane(p, n).keep();
   const int den_sign = num::sign(den);
   if (den_sign == 0) {
     if constexpr (Probe::on) probe.step(L::parallel, StepKind::miss);
@@ -47,7 +46,7 @@ template <class Num, class Probe = NoProbe>
     return out;
   }
   out.hit = true, out.t = Num(num / den);
-  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
+  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   return out;
 }
 

@@ -33,7 +33,7 @@ struct RaySphereGeometric {
 #undef SW_LINES_RAY_SPHERE_GEOMETRIC
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline SphereHit<Num> ray_sphere_geometric(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
   using L = RaySphereGeometric;
   SphereHit<Num> out;
@@ -41,17 +41,18 @@ template <class Num, class Probe = NoProbe>
   const Num l2 = dot(l, l), a = dot(r.d, r.d), r2 = Num(radius * radius);
   if constexpr (Probe::on)
     probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2)
-        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z).geo(GeoKind::sphere, c.x, c.y, c.z, radius);
+        .ray(r.o, r.d).keep().sphere(c, radius).keep();
   const bool inside = l2 < r2, outside = l2 > r2;
   if constexpr (Probe::on) probe.step(L::inside, StepKind::decide).idx("inside", inside).idx("on", !inside && !outside);
   const Num tca = dot(l, r.d);
-  if constexpr (Probe::on) probe.step(L::tca, StepKind::decide).num("tca", tca);
+  if constexpr (Probe::on) probe.step(L::tca, StepKind::decide).num("tca", tca).point(Vec3<Num>(r.o + Num(tca / a) * r.d)).label("closest").keep();
   if (!inside && !(tca > Num(0))) {
     if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
     return out;
   }
   const Num m2 = Num(l2 - Num(tca * tca) / a);
-  if constexpr (Probe::on) probe.step(L::dist, StepKind::decide).num("m2", m2);
+  if constexpr (Probe::on)  // the line's closest approach to c, coloured by whether it is within r
+    probe.step(L::dist, StepKind::decide).num("m2", m2).segment(c, Vec3<Num>(r.o + Num(tca / a) * r.d)).label("r^2 - m2").value(Num(r2 - m2)).keep();
   if (m2 > r2) {
     if constexpr (Probe::on) probe.step(L::reject, StepKind::miss);
     return out;
@@ -64,7 +65,7 @@ template <class Num, class Probe = NoProbe>
   out.t = Num(n.value / a);
   out.t_exact = n.exact;
   out.hit = true;
-  if constexpr (Probe::on) probe.step(L::root, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d));
+  if constexpr (Probe::on) probe.step(L::root, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   return out;
 }
 

@@ -20,7 +20,7 @@ struct RaySphereQuadratic {
 #undef SW_LINES_RAY_SPHERE_QUADRATIC
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
   using L = RaySphereQuadratic;
   SphereHit<Num> out;
@@ -28,7 +28,7 @@ template <class Num, class Probe = NoProbe>
   const Num a = dot(r.d, r.d), b = Num(Num(2) * dot(f, r.d)), cc = Num(dot(f, f) - radius * radius);
   if constexpr (Probe::on)
     probe.step(L::coeffs, StepKind::init).num("a", a).num("b", b).num("c", cc)
-        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z).geo(GeoKind::sphere, c.x, c.y, c.z, radius);
+        .ray(r.o, r.d).keep().sphere(c, radius).keep();
   const Num disc = Num(b * b - Num(4) * a * cc);
   if constexpr (Probe::on) probe.step(L::disc, StepKind::decide).num("D", disc);
   if (disc < Num(0)) {
@@ -38,13 +38,14 @@ template <class Num, class Probe = NoProbe>
   const Num two_a = Num(Num(2) * a), nb = Num(-b);
   const num::Rooted<Num> r0 = add_root(nb, -1, disc), r1 = add_root(nb, 1, disc);
   const Num n0 = r0.value, n1 = r1.value;
-  if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("n0", n0).num("n1", n1).num("t0", Num(n0 / two_a)).num("t1", Num(n1 / two_a));
+  if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("n0", n0).num("n1", n1).num("t0", Num(n0 / two_a)).num("t1", Num(n1 / two_a))
+        .point(Vec3<Num>(r.o + Num(n0 / two_a) * r.d)).label("t0").keep().point(Vec3<Num>(r.o + Num(n1 / two_a) * r.d)).label("t1").keep();
   // Branch-free from here (the outcome depends on the data); only the reported root is divided.
   const bool near_hit = n0 > Num(0), far_hit = n1 > Num(0);
   out = {bool(near_hit | far_hit), Num(num::select(near_hit, n0, n1) / two_a), near_hit ? r0.exact : r1.exact};
   if constexpr (Probe::on) {
-    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
-    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
+    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
+    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
     else probe.step(L::none, StepKind::miss);
   }
   return out;

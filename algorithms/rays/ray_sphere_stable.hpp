@@ -26,7 +26,7 @@ struct RaySphereStable {
 #undef SW_LINES_RAY_SPHERE_STABLE
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline SphereHit<Num> ray_sphere_stable(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
   using L = RaySphereStable;
   SphereHit<Num> out;
@@ -34,9 +34,11 @@ template <class Num, class Probe = NoProbe>
   const Num a = dot(r.d, r.d), bh = dot(f, r.d), r2 = Num(radius * radius), cc = Num(dot(f, f) - r2);
   if constexpr (Probe::on)
     probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc)
-        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z).geo(GeoKind::sphere, c.x, c.y, c.z, radius);
+        .ray(r.o, r.d).keep().sphere(c, radius).keep();
   const Vec3<Num> l = f - Num(bh / a) * r.d;
-  if constexpr (Probe::on) probe.step(L::foot, StepKind::advance).num("lx", l.x).num("ly", l.y).num("lz", l.z).point(Vec3<Num>(c + l));
+  if constexpr (Probe::on)  // the foot of the perpendicular from c, and whether the line is within r of c
+    probe.step(L::foot, StepKind::advance).num("lx", l.x).num("ly", l.y).num("lz", l.z).point(Vec3<Num>(c + l)).label("foot").keep()
+        .segment(c, Vec3<Num>(c + l)).label("r^2 - |l|^2").value(Num(r2 - dot(l, l))).keep();
   const Num disc = Num(a * Num(r2 - dot(l, l)));
   if constexpr (Probe::on) probe.step(L::disc, StepKind::decide).num("D", disc);
   if (disc < Num(0)) {
@@ -59,13 +61,15 @@ template <class Num, class Probe = NoProbe>
   const bool near_hit = b_neg & (cc_sign > 0), far_hit = b_neg | (cc_sign < 0), far_is_qa = b_neg & !near_hit;
   if constexpr (Probe::on) {
     const Num t_qa = Num(q / a), t_cq = Num(cc / q);
-    probe.step(L::order, StepKind::decide).num("near", num::select(b_neg, t_cq, t_qa)).num("far", num::select(b_neg, t_qa, t_cq));
+    const Num near = num::select(b_neg, t_cq, t_qa), far = num::select(b_neg, t_qa, t_cq);
+    probe.step(L::order, StepKind::decide).num("near", near).num("far", far).point(Vec3<Num>(r.o + near * r.d)).label("near").keep()
+        .point(Vec3<Num>(r.o + far * r.d)).label("far").keep();
   }
   out.hit = far_hit;  // near_hit implies far_hit
   out.t = Num(num::select(far_is_qa, q, cc) / num::select(far_is_qa, a, q));
   if constexpr (Probe::on) {
-    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
-    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d));
+    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
+    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
     else probe.step(L::none, StepKind::miss);
   }
   return out;

@@ -23,16 +23,13 @@ struct RayTriangleBarycentric {
 #undef SW_LINES_RAY_TRIANGLE_BARYCENTRIC
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_barycentric(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx, Probe& probe) {
   using L = RayTriangleBarycentric;
   TriangleHit<Num> out;
   const Vec3<Num> e1 = vtx[1] - vtx[0], e2 = vtx[2] - vtx[0];
   const Vec3<Num> n = cross(e1, e2);
-  if constexpr (Probe::on)
-    probe.step(L::normal, StepKind::init).num("nx", n.x).num("ny", n.y).num("nz", n.z)
-        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
-        .geo(GeoKind::triangle3, vtx[0].x, vtx[0].y, vtx[0].z, vtx[1].x, vtx[1].y, vtx[1].z, vtx[2].x, vtx[2].y, vtx[2].z);
+  if constexpr (Probe::on) record_triangle_scene(probe.step(L::normal, StepKind::init).num("nx", n.x).num("ny", n.y).num("nz", n.z), r, vtx);
   const Num den = dot(n, r.d);
   if constexpr (Probe::on) probe.step(L::denom, StepKind::decide).num("den", den);
   if (den == Num(0)) {
@@ -46,14 +43,17 @@ template <class Num, class Probe = NoProbe>
     return out;
   }
   const Vec3<Num> p = r.o + t * r.d;
-  if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p);
+  if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p).label("p").keep();
   const int k = num::max_axis(n), i = (k + 1) % 3, j = (k + 2) % 3;
   if constexpr (Probe::on) probe.step(L::drop, StepKind::decide).idx("k", k);
   const Vec3<Num> w = p - vtx[0];
   const Num nk = Num(e1[i] * e2[j] - e1[j] * e2[i]);  // = n_k, nonzero as |n_k| is max and n != 0
   const Num beta = Num(Num(w[i] * e2[j] - w[j] * e2[i]) / nk);
   const Num gamma = Num(Num(e1[i] * w[j] - e1[j] * w[i]) / nk);
-  if constexpr (Probe::on) probe.step(L::solve, StepKind::decide).num("beta", beta).num("gamma", gamma);
+  // Each weight is an edge test: b_i = 0 on the edge opposite v_i, so its sign colours that edge.
+  if constexpr (Probe::on)
+    probe.step(L::solve, StepKind::decide).num("beta", beta).num("gamma", gamma).segment(vtx[2], vtx[0]).label("beta").value(beta)
+        .segment(vtx[0], vtx[1]).label("gamma").value(gamma).segment(vtx[1], vtx[2]).label("1 - beta - gamma").value(Num(Num(1) - Num(beta + gamma)));
   if (beta < Num(0) || gamma < Num(0) || Num(beta + gamma) > Num(1)) {
     if constexpr (Probe::on) probe.step(L::inside, StepKind::miss);
     return out;
@@ -61,7 +61,7 @@ template <class Num, class Probe = NoProbe>
   out.hit = true;
   out.t = t;
   out.b = {Num(Num(1) - beta - gamma), beta, gamma};
-  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(p);
+  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(p).label("hit");
   return out;
 }
 

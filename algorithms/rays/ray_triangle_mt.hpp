@@ -24,14 +24,12 @@ struct RayTriangleMT {
 #undef SW_LINES_RAY_TRIANGLE_M_T
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_mt(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx, Probe& probe) {
   using L = RayTriangleMT;
   TriangleHit<Num> out;
   const Vec3<Num> e1 = vtx[1] - vtx[0], e2 = vtx[2] - vtx[0];
-  if constexpr (Probe::on)
-    probe.step(L::edges, StepKind::init).geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
-        .geo(GeoKind::triangle3, vtx[0].x, vtx[0].y, vtx[0].z, vtx[1].x, vtx[1].y, vtx[1].z, vtx[2].x, vtx[2].y, vtx[2].z);
+  if constexpr (Probe::on) record_triangle_scene(probe.step(L::edges, StepKind::init), r, vtx);
   const Vec3<Num> p = cross(r.d, e2);
   const Num det = dot(e1, p);
   if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
@@ -42,14 +40,15 @@ template <class Num, class Probe = NoProbe>
   const Num inv = Num(Num(1) / det);
   const Vec3<Num> s = r.o - vtx[0];
   const Num u = Num(dot(s, p) * inv);
-  if constexpr (Probe::on) probe.step(L::u, StepKind::decide).num("u", u);
+  if constexpr (Probe::on) probe.step(L::u, StepKind::decide).num("u", u).segment(vtx[2], vtx[0]).label("u").value(u);  // u = 0 on the edge opposite v1
   if (u < Num(0) || u > Num(1)) {
     if constexpr (Probe::on) probe.step(L::u, StepKind::miss);
     return out;
   }
   const Vec3<Num> q = cross(s, e1);
   const Num v = Num(dot(r.d, q) * inv);
-  if constexpr (Probe::on) probe.step(L::v, StepKind::decide).num("v", v);
+  if constexpr (Probe::on)
+    probe.step(L::v, StepKind::decide).num("v", v).segment(vtx[0], vtx[1]).label("v").value(v).segment(vtx[1], vtx[2]).label("1 - u - v").value(Num(Num(1) - Num(u + v)));
   if (v < Num(0) || Num(u + v) > Num(1)) {
     if constexpr (Probe::on) probe.step(L::v, StepKind::miss);
     return out;
@@ -63,7 +62,7 @@ template <class Num, class Probe = NoProbe>
   out.hit = true;
   out.t = t;
   out.b = {Num(Num(1) - u - v), u, v};
-  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(Vec3<Num>(r.o + t * r.d));
+  if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(Vec3<Num>(r.o + t * r.d)).label("hit");
   return out;
 }
 

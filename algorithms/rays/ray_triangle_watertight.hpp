@@ -36,7 +36,7 @@ struct RayTriangleWatertight {
 #undef SW_LINES_RAY_TRIANGLE_WATERTIGHT
 };
 
-template <class Num, class Probe = NoProbe>
+template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_watertight(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) {
   using L = RayTriangleWatertight;
   TriangleHit<Num> out;
@@ -44,20 +44,21 @@ template <class Num, class Probe = NoProbe>
   int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
   if (r.d[kz] < Num(0)) std::swap(kx, ky);
   if constexpr (Probe::on)
-    probe.step(L::axes, StepKind::init).idx("kx", kx).idx("ky", ky).idx("kz", kz)
-        .geo(GeoKind::ray3, r.o.x, r.o.y, r.o.z, r.d.x, r.d.y, r.d.z)
-        .geo(GeoKind::triangle3, v[0].x, v[0].y, v[0].z, v[1].x, v[1].y, v[1].z, v[2].x, v[2].y, v[2].z);
+    record_triangle_scene(probe.step(L::axes, StepKind::init).idx("kx", kx).idx("ky", ky).idx("kz", kz), r, v);
   const Num sx = Num(r.d[kx] / r.d[kz]), sy = Num(r.d[ky] / r.d[kz]), sz = Num(Num(1) / r.d[kz]);
   if constexpr (Probe::on) probe.step(L::shear, StepKind::init).num("Sx", sx).num("Sy", sy).num("Sz", sz);
   const Vec3<Num> a = v[0] - r.o, b = v[1] - r.o, c = v[2] - r.o;
-  if constexpr (Probe::on) probe.step(L::translate, StepKind::init).point(a).point(b).point(c);
+  if constexpr (Probe::on) probe.step(L::translate, StepKind::init).segment(r.o, v[0]).label("A").segment(r.o, v[1]).label("B").segment(r.o, v[2]).label("C");
   const Num ax = Num(a[kx] - sx * a[kz]), ay = Num(a[ky] - sy * a[kz]);
   const Num bx = Num(b[kx] - sx * b[kz]), by = Num(b[ky] - sy * b[kz]);
   const Num cx = Num(c[kx] - sx * c[kz]), cy = Num(c[ky] - sy * c[kz]);
   if constexpr (Probe::on)
     probe.step(L::project, StepKind::init).num("Ax", ax).num("Ay", ay).num("Bx", bx).num("By", by).num("Cx", cx).num("Cy", cy);
   Num u = Num(cx * by - cy * bx), w_v = Num(ax * cy - ay * cx), w = Num(bx * ay - by * ax);
-  if constexpr (Probe::on) probe.step(L::edges, StepKind::decide).num("U", u).num("V", w_v).num("W", w);
+  // U, V, W are the edge functions of the edges opposite v0, v1, v2: their signs colour those edges.
+  if constexpr (Probe::on)
+    probe.step(L::edges, StepKind::decide).num("U", u).num("V", w_v).num("W", w).segment(v[1], v[2]).label("U").value(u)
+        .segment(v[2], v[0]).label("V").value(w_v).segment(v[0], v[1]).label("W").value(w);
   if constexpr (std::is_same_v<Num, float>) {
     if (u == 0.0f || w_v == 0.0f || w == 0.0f) {
       // Float edge functions of exactly zero are retried with double products of the same
@@ -66,7 +67,9 @@ template <class Num, class Probe = NoProbe>
       const double axy = double(ax) * double(cy), ayx = double(ay) * double(cx);
       const double bxy = double(bx) * double(ay), byx = double(by) * double(ax);
       u = float(cxy - cyx), w_v = float(axy - ayx), w = float(bxy - byx);
-      if constexpr (Probe::on) probe.step(L::retry, StepKind::decide).num("U", u).num("V", w_v).num("W", w);
+      if constexpr (Probe::on)
+        probe.step(L::retry, StepKind::decide).num("U", u).num("V", w_v).num("W", w).segment(v[1], v[2]).label("U").value(u)
+            .segment(v[2], v[0]).label("V").value(w_v).segment(v[0], v[1]).label("W").value(w);
     }
   }
   const int su = num::sign(u), sv = num::sign(w_v), sw = num::sign(w);
@@ -94,7 +97,7 @@ template <class Num, class Probe = NoProbe>
   out.b = {Num(u * inv_det), Num(w_v * inv_det), Num(w * inv_det)};
   if constexpr (Probe::on) {
     const Vec3<Num> p = r.o + out.t * r.d;
-    probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p);
+    probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p).label("hit");
   }
   return out;
 }

@@ -4,12 +4,11 @@
 #include <algorithm>
 #include <random>
 #include "adapter.hpp"
-#include "curves/bezier_forward_diff.hpp"
 #include "curves/circle_interior.hpp"
 #include "curves/circle_midpoint.hpp"
 #include "curves/implicit_curve.hpp"
+#include "curves/outlines.hpp"
 #include "curves/poly_horner.hpp"
-#include "curves_bezier_oracle.hpp"
 #include "curves_oracle.hpp"
 #include "pixels.hpp"
 
@@ -54,8 +53,15 @@ template <class AlgoT> struct CubicSpec {
   using Algo = AlgoT;
   using Input = CubicInput;
   using Output = PixelsOutput;
+  static constexpr bool forward = std::is_same_v<Algo, curves::PolyForwardDiff>;
   static constexpr std::string_view family = "curves";
-  static constexpr std::array views{View::plane2d};
+  static constexpr std::array views{View::plane2d, View::table, View::plot};
+  // One row per column: the difference table (x, y, j, d1, d2), or Horner's x, y, j.
+  static constexpr auto table_lines = [] {
+    if constexpr (forward) return std::array<std::string_view, 2>{"start", "step"};
+    else return std::array<std::string_view, 1>{"eval"};
+  }();
+  static std::vector<Polyline2> outline(const Input& in, const Rect2& w, double cell) { return curves::cubic_outline(in.c, in.xs, in.xe, w, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"coeffs":["1/64",0,"-3/2",2],"xs":-12,"xe":13})";
   static Input parse(const Json& j, Numeric n) { return parse_cubic(j, n); }
@@ -67,7 +73,7 @@ template <class AlgoT> struct CubicSpec {
   }
   template <class Num, class Probe> static Output compute(const curves::Cubic<Num>& p, Probe& probe) {
     Output o;
-    if constexpr (std::is_same_v<Algo, curves::PolyForwardDiff>) curves::poly_forward_diff<Num>(p, o.pixels, probe);
+    if constexpr (forward) curves::poly_forward_diff<Num>(p, o.pixels, probe);
     else curves::poly_horner<Num>(p, o.pixels, probe);
     return o;
   }
@@ -113,7 +119,9 @@ template <class AlgoT> struct CircleSpec {
   using Output = PixelsOutput;
   static constexpr bool midpoint = std::is_same_v<Algo, curves::CircleMidpoint>;
   static constexpr std::string_view family = "curves";
-  static constexpr std::array views{View::plane2d};
+  static constexpr std::array views{View::plane2d, View::table, View::plot};
+  static constexpr std::array<std::string_view, 1> table_lines{"plot"};  // one row per octant pixel
+  static std::vector<Polyline2> outline(const Input& in, const Rect2& w, double cell) { return curves::circle_outline(in.cx, in.cy, in.r, w, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"c":[0,0],"r":9})";
   static Input parse(const Json& j, Numeric) { return parse_circle(j); }
@@ -227,7 +235,9 @@ struct ImplicitSpec {
   using Input = ImplicitInput;
   using Output = ImplicitOutput;
   static constexpr std::string_view family = "curves";
-  static constexpr std::array views{View::plane2d};
+  static constexpr std::array views{View::plane2d, View::table};
+  static constexpr std::array<std::string_view, 1> table_lines{"grad"};  // one row per move
+  static std::vector<Polyline2> outline(const Input& in, const Rect2& w, double cell) { return curves::implicit_outline(in.c, w, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"P":[["1/4",2,0],[1,0,2],[-36,0,0]],"start":[-12,0],"max_steps":200})";
   static Input parse(const Json& j, Numeric) { return parse_implicit(j); }
@@ -303,87 +313,7 @@ struct ImplicitSpec {
 
 }  // namespace
 
-struct BezierInput {
-  std::array<Vec2<Rational>, 4> p;
-  std::int64_t n = 1;
-};
-
-struct BezierSpec {
-  using Algo = curves::BezierForwardDiff;
-  using Input = BezierInput;
-  using Output = PixelsOutput;
-  static constexpr std::int64_t kMaxCoord = std::int64_t{1} << 16, kMaxSegments = 1024;
-  static constexpr std::string_view family = "curves";
-  static constexpr std::array views{View::plane2d};
-  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
-  static inline const std::string example = R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"n":6})";
-  static Input parse(const Json& j, Numeric) {
-    only_keys(j, {"bezier", "n"}, "input");
-    const Json& b = j["bezier"];
-    if (!b.is_array() || b.size() != 4) throw InputError("input.bezier: expected four control points [[x,y],[x,y],[x,y],[x,y]]");
-    Input in;
-    for (int i = 0; i < 4; ++i) {
-      const std::string what = "input.bezier[" + std::to_string(i) + "]";
-      if (!b[i].is_array() || b[i].size() != 2) throw InputError(what + ": expected [x, y]");
-      for (int a = 0; a < 2; ++a) {
-        in.p[i][a] = parse_rational(b[i][a], what + "[" + std::to_string(a) + "]");
-        check_bound(in.p[i][a], double(kMaxCoord), what + "[" + std::to_string(a) + "]");
-        check_digits(in.p[i][a], what + "[" + std::to_string(a) + "]");
-      }
-    }
-    in.n = parse_integer(j["n"], "input.n", 1, kMaxSegments);
-    return in;
-  }
-  static std::vector<Handle> handles() {
-    std::vector<Handle> h;
-    for (int i = 0; i < 4; ++i) h.push_back({"/bezier/" + std::to_string(i), Handle::Kind::point2, 8, "P" + std::to_string(i)});
-    return h;
-  }
-  template <class Num> static curves::Bezier<Num> prepare(const Input& in) {
-    curves::Bezier<Num> b;
-    for (int i = 0; i < 4; ++i) b.p[i] = to_num<Num>(in.p[i]);
-    b.n = in.n;
-    return b;
-  }
-  template <class Num, class Probe> static Output compute(const curves::Bezier<Num>& b, Probe& probe) {
-    Output o;
-    curves::bezier_forward_diff<Num>(b, o.pixels, probe);
-    return o;
-  }
-  static Json to_json(const Output& o) { return pixels_json("pixels", o); }
-  static void write_members(const Output& o, std::ostream& os) { pixels_members("pixels", o, os); }
-  static std::size_t ops(const Output& o) { return o.pixels.size(); }
-  // The curve lies in the control points' hull: at most its box's width + height pixels per pass.
-  static std::size_t estimate_steps(const Input& in) {
-    Rational span = 0;
-    for (int i = 0; i < 3; ++i) span += abs(Rational(in.p[i + 1].x - in.p[i].x)) + abs(Rational(in.p[i + 1].y - in.p[i].y));
-    return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 8 * static_cast<std::size_t>(in.n) + 16;
-  }
-  static Output oracle(const Input& in) { return {oracle::bezier_pixels(in.p, in.n)}; }
-  static std::vector<BenchSet<Input>> bench_sets() {
-    std::mt19937_64 rng(20261125);
-    auto u = [&](long lo, long hi) {
-      Rational r(std::uniform_int_distribution<long>(lo, hi)(rng), 8);
-      r.canonicalize();
-      return r;
-    };
-    BenchSet<Input> random{"random", {}}, fine{"fine", {}};
-    for (int i = 0; i < 1000; ++i) {
-      Input in;
-      for (auto& c : in.p) c = {u(-2000, 2000), u(-2000, 2000)};
-      in.n = std::uniform_int_distribution<std::int64_t>(4, 32)(rng);
-      random.inputs.push_back(in);
-    }
-    // Many short segments: the forward-difference table runs long, the DDA segments are short.
-    for (int i = 0; i < 20; ++i) {
-      Input in;
-      for (auto& c : in.p) c = {u(-8000, 8000), u(-8000, 8000)};
-      in.n = 1024;
-      fine.inputs.push_back(in);
-    }
-    return {random, fine};
-  }
-};
+void register_bezier(std::vector<Algorithm>& out);  // bezier.cpp
 
 void register_curves(std::vector<Algorithm>& out) {
   out.push_back(make_algorithm<CubicSpec<curves::PolyForwardDiff>>());
@@ -391,7 +321,7 @@ void register_curves(std::vector<Algorithm>& out) {
   out.push_back(make_algorithm<CircleSpec<curves::CircleInterior>>());
   out.push_back(make_algorithm<CircleSpec<curves::CircleMidpoint>>());
   out.push_back(make_algorithm<ImplicitSpec>());
-  out.push_back(make_algorithm<BezierSpec>());
+  register_bezier(out);
 }
 
 }  // namespace sw

@@ -192,6 +192,60 @@ std::vector<BenchSet<RayInput>> bench_sets_for(Prim p) {
   return {random, hard};
 }
 
+// The image view's sweep: rays parallel to the input's d, their origins on a grid over the plane
+// through o across d's major axis m, framing the primitive's shadow on it ([-1, 1]^2 in the grid).
+// Coordinates are rounded to the grid's input mode, so every mode sweeps the very same rays.
+struct SweepFrame {
+  int m = 2, a = 0, b = 1;
+  double flip = 1;               // -1 mirrors axis a, so the image is seen looking along d
+  double ca = 0, cb = 0, s = 1;  // the frame's centre and half size on the plane
+  double mx = 0, my = 0;         // the input's origin in the frame (the marker)
+  std::array<double, 3> o{}, d{};
+};
+double round_to(Numeric n, double x) { return n == Numeric::f32 ? double(float(x)) : x; }
+template <class Num> Num from_double(double x) {
+  if constexpr (std::is_same_v<Num, Rational>) return num::to_rational(x);
+  else return Num(x);
+}
+
+SweepFrame sweep_frame(const RayInput& in, Prim prim, Numeric inputs) {
+  SweepFrame f;
+  std::array<double, 3> o, d;
+  for (int k = 0; k < 3; ++k) o[k] = in.o[k].get_d(), d[k] = in.d[k].get_d();
+  for (int k = 0; k < 3; ++k)
+    if (std::fabs(d[k]) > std::fabs(d[f.m])) f.m = k;
+  f.a = (f.m + 1) % 3, f.b = (f.m + 2) % 3, f.flip = d[f.m] < 0 ? 1 : -1;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  auto add = [&](const Vec3<Rational>& q, double pad) {  // q's shadow along d, grown by pad
+    const double t = (q[f.m].get_d() - o[f.m]) / d[f.m];
+    const double p[2] = {q[f.a].get_d() - t * d[f.a], q[f.b].get_d() - t * d[f.b]};
+    for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k] - pad), hi[k] = std::max(hi[k], p[k] + pad);
+  };
+  const double stretch = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / std::fabs(d[f.m]);
+  switch (prim) {
+    case Prim::triangle: for (const auto& v : in.v) add(v, 0); break;
+    case Prim::sphere: add(in.v[0], in.r.get_d() * stretch); break;
+    case Prim::box:
+      for (int c = 0; c < 8; ++c) add({in.v[c & 1].x, in.v[(c >> 1) & 1].y, in.v[c >> 2].z}, 0);
+      break;
+    case Prim::plane: add(in.o, std::max(1.0, std::sqrt(dot(in.o - in.v[0], in.o - in.v[0]).get_d()))); break;
+  }
+  f.ca = (lo[0] + hi[0]) / 2, f.cb = (lo[1] + hi[1]) / 2;
+  f.s = std::max(hi[0] - lo[0], hi[1] - lo[1]) / 2 * 1.15;
+  if (!(f.s > 0) || !std::isfinite(f.s)) f.s = 1;
+  for (int k = 0; k < 3; ++k) f.o[k] = round_to(inputs, o[k]), f.d[k] = in.d_neg_zero[k] ? -0.0 : round_to(inputs, d[k]);
+  f.mx = (o[f.a] - f.ca) / f.s * f.flip, f.my = (o[f.b] - f.cb) / f.s;
+  return f;
+}
+// Sample (i, j)'s origin: an offset from the input's own, so that the sample at the marker is the
+// input ray.
+std::array<double, 3> sample_origin(const SweepFrame& f, const SweepGrid& g, int i, int j) {
+  std::array<double, 3> o = f.o;
+  o[f.a] = round_to(g.inputs, f.o[f.a] + f.flip * (g.x(i) - f.mx) * f.s);
+  o[f.b] = round_to(g.inputs, f.o[f.b] + (g.y(j) - f.my) * f.s);
+  return o;
+}
+
 template <class AlgoT, Prim P> struct RaySpec {
   using Algo = AlgoT;
   using Input = RayInput;
@@ -199,7 +253,7 @@ template <class AlgoT, Prim P> struct RaySpec {
   // The magnitude filter, then intervals for what it leaves uncertain (docs/rays/accuracy.md).
   using Filters = std::tuple<Mag, Interval>;
   static constexpr std::string_view family = "rays";
-  static constexpr std::array views{View::orbit3d};
+  static constexpr std::array views{View::orbit3d, View::image};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static Input parse(const Json& j, Numeric) { return parse_input(j, P); }
   static std::vector<Handle> handles() { return {{"/ray/o", Handle::Kind::point3, 8, "o"}, {"/ray/d", Handle::Kind::direction3, 0, "o + d"}}; }
@@ -223,6 +277,28 @@ template <class AlgoT, Prim P> struct RaySpec {
   static Json to_json(const Output& o) { return output_json<P>(o); }
   static std::size_t ops(const Output&) { return 1; }
   static std::vector<BenchSet<Input>> bench_sets() { return bench_sets_for(P); }
+  static constexpr std::string_view sweep_caption = "rays parallel to d";
+  template <class Num> static auto sweeper(const Input& in, const SweepGrid& g) {
+    return [f = sweep_frame(in, P, g.inputs), g](int i, int j, Prepared<Num>& p) {
+      const std::array<double, 3> o = sample_origin(f, g, i, j);
+      for (int k = 0; k < 3; ++k) p.ray.o[k] = from_double<Num>(o[k]), p.ray.d[k] = from_double<Num>(f.d[k]);
+    };
+  }
+  static Json sweep_input(Json j, const Input& in, const SweepGrid& g, int i, int k) {
+    const SweepFrame f = sweep_frame(in, P, g.inputs);
+    const std::array<double, 3> o = sample_origin(f, g, i, k);
+    j["ray"] = {{"o", {o[0], o[1], o[2]}}, {"d", {f.d[0], f.d[1], f.d[2]}}};
+    return j;
+  }
+  static float sweep_value(const Output& o) {
+    if (!o.hit) return NAN;
+    return static_cast<float>(o.exact ? o.exact->t.get_d() : o.t);
+  }
+  // The input ray's origin in the frame.
+  static std::optional<std::array<double, 2>> sweep_marker(const Input& in) {
+    const SweepFrame f = sweep_frame(in, P, Numeric::f64);
+    return std::array<double, 2>{f.mx, f.my};
+  }
   static Output oracle(const Input& in) {
     switch (P) {
       case Prim::triangle: {

@@ -193,7 +193,8 @@ TEST_CASE("curves: every value a circle step records matches its closed form", "
           FAIL("no expectation for line " << line);
         }
         require_all_checked(sv, s);
-        // Geometry: plot steps hold pixels only; the start step the exact circle.
+        // Geometry: plot steps hold pixels only; the start step the exact circle, kept; the decide
+        // step the two candidate pixels on the row, labelled with the tracked value and valued by it.
         for (std::uint32_t g = t.at(s).geo_begin; g < t.at(s).geo_end; ++g) {
           const GeoRecord& geo = t.geo_at(g);
           if (line == "start") {
@@ -201,9 +202,22 @@ TEST_CASE("curves: every value a circle step records matches its closed form", "
             CHECK(t.num_value(geo.slot) == c.cx);
             CHECK(t.num_value(geo.slot + 1) == c.cy);
             CHECK(t.num_value(geo.slot + 2) == r);
+            CHECK(geo.life == Life::keep);
+          } else if (line == "decide") {
+            REQUIRE(geo.kind == GeoKind::segment2);
+            CHECK(t.num_value(geo.slot) == c.cx + x);
+            CHECK(t.num_value(geo.slot + 1) == c.cy + y);
+            CHECK(t.num_value(geo.slot + 2) == c.cx + x + 1);
+            CHECK(t.num_value(geo.slot + 3) == c.cy + y);
+            REQUIRE(geo.label);
+            CHECK(geo.label == V);
+            REQUIRE(geo.value != GeoRecord::kNoValue);
+            CHECK(t.num_value(geo.value) == value(x, y));
+            CHECK(geo.life == Life::step);
           } else {
             CHECK(line == "plot");
             CHECK(geo.kind == GeoKind::pixel);
+            CHECK(geo.life == Life::step);
           }
         }
       }

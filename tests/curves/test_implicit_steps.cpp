@@ -39,13 +39,23 @@ TEST_CASE("implicit-curve: every value an exact step records matches its closed 
       lines_seen.insert(line);
       INFO(name << " step " << s << " line " << line);
       StepValues sv = values_of(t, s);
-      std::vector<std::pair<GeoKind, std::vector<Rational>>> geo;
+      struct Item {
+        GeoKind first;  // the kind
+        std::vector<Rational> second;  // its values
+        std::string label;
+        std::optional<Rational> value;
+        Life life;
+      };
+      std::vector<Item> geo;
       for (std::uint32_t g = t.at(s).geo_begin; g < t.at(s).geo_end; ++g) {
         const GeoRecord& r = t.geo_at(g);
         std::vector<Rational> vals;
         for (std::uint32_t q = 0; q < r.count; ++q)
           vals.push_back(geo_desc(r.kind).integer ? Rational(t.int_value(r.slot + q)) : t.num_value(r.slot + q));
-        geo.push_back({r.kind, vals});
+        geo.push_back({r.kind, vals, r.label ? r.label : "", r.value == GeoRecord::kNoValue ? std::nullopt : std::optional(t.num_value(r.value)), r.life});
+        if (line != "decide") CHECK(geo.back().label.empty());  // only the decision's midpoint is labelled and valued
+        if (line != "decide") CHECK_FALSE(geo.back().value);
+        CHECK(geo.back().life == Life::step);
       }
       // 2M = 2p + 2 s_a e_a + s_b e_b.
       const std::int64_t mu = 2 * p.x + (major == 0 ? 2 * sa : sb), mv = 2 * p.y + (major == 1 ? 2 * sa : sb);
@@ -109,7 +119,12 @@ TEST_CASE("implicit-curve: every value an exact step records matches its closed 
         next = p;
         (major == 0 ? next.x : next.y) += sa;
         if (diagonal) (major == 0 ? next.y : next.x) += sb;
-        CHECK(geo.empty());
+        // The midpoint, labelled and valued by P there: its sign is the decision.
+        REQUIRE(geo.size() == 1);
+        CHECK(geo[0].first == GeoKind::point2);
+        CHECK(geo[0].second == std::vector<Rational>{ratio(mu, 2), ratio(mv, 2)});
+        CHECK(geo[0].label == "P(M)");
+        CHECK(geo[0].value == std::optional<Rational>(PM));
       } else if (line == "move") {
         ++moves;
         CHECK(sv["x"] == next.x);

@@ -1,0 +1,113 @@
+// The view hooks a Spec may declare, turned into the type-erased fields of views.hpp. adapter.hpp
+// includes this last; its make_algorithm calls fill_view_hooks<Spec>. Optional Spec members:
+//   static constexpr std::array table_lines{"start"sv, ...};  // listing line names: table rows
+//   template <class Num> static auto sweeper(const Input& base, const SweepGrid&);  // returns
+//       f(i, j, Prepared& p), which sets what varies at sample (i, j) in p = prepare<Num>(base)
+//   static float sweep_value(const Output&);                  // NaN for none (a miss)
+//   static std::optional<std::array<double, 2>> sweep_marker(const Input&);
+//   static Json sweep_input(Json input, const Input&, const SweepGrid&, int i, int j);  // sample (i, j)
+//   static constexpr std::string_view sweep_caption;
+//   static std::vector<Polyline2> outline(const Input&, const Rect2& window, double cell);
+#pragma once
+#include <limits>
+#include <optional>
+#include <tuple>
+#include <type_traits>
+#include "adapter.hpp"
+
+namespace sw {
+
+template <class Spec> constexpr bool table_lines_exist() {
+  for (std::string_view name : Spec::table_lines)
+    if (!Spec::Algo::listing().find(name)) return false;
+  return true;
+}
+
+template <class Spec, class N> using SweepPrepared = decltype(Spec::template prepare<N>(std::declval<const typename Spec::Input&>()));
+template <class Spec, class N>
+using SweepSetter = decltype(Spec::template sweeper<N>(std::declval<const typename Spec::Input&>(), std::declval<const SweepGrid&>()));
+
+// Filtered and exact sweeps: each sample through the filter stages, then exact rationals where
+// none decides, so the values equal exact. One prepared input per stage, changed in place.
+template <class Spec, class Stages = typename FiltersOf<Spec>::type> struct CertifiedSweep;
+template <class Spec, class... S> struct CertifiedSweep<Spec, std::tuple<S...>> {
+  template <class N> struct Stage {
+    std::optional<SweepPrepared<Spec, N>> prepared;  // none: the stage cannot take the input
+    SweepSetter<Spec, N> set;
+    Stage(const typename Spec::Input& in, const SweepGrid& g) : set(Spec::template sweeper<N>(in, g)) {
+      try {
+        prepared.emplace(Spec::template prepare<N>(in));
+      } catch (const Uncertain&) {
+      }
+    }
+  };
+  std::tuple<Stage<S>..., Stage<Rational>> stages;
+  CertifiedSweep(const typename Spec::Input& in, const SweepGrid& g) : stages(Stage<S>(in, g)..., Stage<Rational>(in, g)) {}
+  template <class N> static constexpr std::size_t index() {  // by position, as in LaterInputs
+    constexpr bool same[] = {std::is_same_v<N, S>..., false};
+    for (std::size_t k = 0; k < sizeof...(S); ++k)
+      if (same[k]) return k;
+    return sizeof...(S);
+  }
+  float at(int x, int y) {
+    NoProbe none;
+    auto prep = [&]<class N>() -> const auto& {
+      auto& st = std::get<index<N>()>(stages);
+      if (!st.prepared) throw Uncertain{};
+      st.set(x, y, *st.prepared);
+      return *st.prepared;
+    };
+    return Spec::sweep_value(first_certain_stage<Spec>(prep, 0, [&]<class N>(const auto& p, std::size_t) {
+      return Spec::template compute<N>(p, none);
+    }));
+  }
+};
+
+// Runs Spec untraced over the grid (see Sweep::run): the input is prepared once per number type
+// and the Spec's sweeper changes what varies, sample by sample.
+template <class Spec> void run_sweep(const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) {
+  const typename Spec::Input base = Spec::parse(j, n);
+  out.assign(static_cast<std::size_t>(std::max(g.w, 0)) * static_cast<std::size_t>(std::max(g.h, 0)),
+             std::numeric_limits<float>::quiet_NaN());
+  auto each = [&](auto&& value) {
+    for (int y = 0; y < g.h; ++y)
+      for (int x = 0; x < g.w; ++x) out[static_cast<std::size_t>(y) * g.w + x] = value(x, y);
+  };
+  if constexpr (spec_has<Spec>(Numeric::filtered)) {
+    if (n == Numeric::filtered || n == Numeric::exact) {
+      CertifiedSweep<Spec> sweep(base, g);
+      each([&](int x, int y) { return sweep.at(x, y); });
+      return;
+    }
+  }
+  with_number_type<Spec>(n, [&](auto t) {
+    using Num = typename decltype(t)::type;
+    auto p = Spec::template prepare<Num>(base);
+    auto set = Spec::template sweeper<Num>(base, g);
+    NoProbe none;
+    each([&](int x, int y) {
+      set(x, y, p);
+      return Spec::sweep_value(Spec::template compute<Num>(p, none));
+    });
+    return 0;
+  });
+}
+
+template <class Spec> void fill_view_hooks(Algorithm& a) {
+  if constexpr (requires { Spec::table_lines; }) {
+    static_assert(table_lines_exist<Spec>(), "table_lines names a line the listing does not have");
+    a.table_lines.assign(Spec::table_lines.begin(), Spec::table_lines.end());
+  }
+  if constexpr (requires(const typename Spec::Input& in, const SweepGrid& g) { Spec::template sweeper<Rational>(in, g); }) {
+    a.sweep.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec>(j, n, g, out); };
+    if constexpr (requires(const typename Spec::Input& in) { Spec::sweep_marker(in); })
+      a.sweep.marker = [](const Json& j) { return Spec::sweep_marker(Spec::parse(j, Numeric::exact)); };
+    if constexpr (requires { Spec::sweep_caption; }) a.sweep.caption = Spec::sweep_caption;
+    if constexpr (requires(const typename Spec::Input& in, const SweepGrid& g) { Spec::sweep_input(Json(), in, g, 0, 0); })
+      a.sweep.sample = [](const Json& j, const SweepGrid& g, int x, int y) { return Spec::sweep_input(j, Spec::parse(j, Numeric::exact), g, x, y); };
+  }
+  if constexpr (requires(const typename Spec::Input& in, const Rect2& r) { Spec::outline(in, r, 1.0); })
+    a.outline = [](const Json& j, const Rect2& w, double cell) { return Spec::outline(Spec::parse(j, Numeric::exact), w, cell); };
+}
+
+}  // namespace sw

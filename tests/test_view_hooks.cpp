@@ -1,0 +1,126 @@
+// The view hooks Specs declare (runtime/views.hpp): the exact curves' outlines lie on the curves,
+// marching squares finds a circle, the sweep runs what the CLI runs on the very sample inputs, and
+// every declared view and table line exists.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include "catalog.hpp"
+#include "contour.hpp"
+
+using namespace sw;
+
+namespace {
+
+// Every vertex lies within `tol` of the circle (cx, cy, r), and the vertices visit all 72 five-degree
+// sectors of it.
+void check_on_circle(const std::vector<Polyline2>& lines, double cx, double cy, double r, double tol) {
+  REQUIRE(!lines.empty());
+  std::vector<bool> sector(72, false);
+  for (const Polyline2& l : lines)
+    for (const auto& p : l) {
+      const double dx = p[0] - cx, dy = p[1] - cy;
+      INFO("vertex (" << p[0] << ", " << p[1] << ")");
+      CHECK(std::fabs(std::hypot(dx, dy) - r) <= tol);
+      sector[static_cast<std::size_t>(std::floor((std::atan2(dy, dx) + M_PI) / (2 * M_PI) * 72)) % 72] = true;
+    }
+  CHECK(std::count(sector.begin(), sector.end(), true) == 72);
+}
+
+}  // namespace
+
+TEST_CASE("view hooks: marching squares on x^2 + y^2 - 25 stays within 1e-3 of the circle of radius 5", "[views][outline]") {
+  const auto f = [](double x, double y) { return x * x + y * y - 25; };
+  check_on_circle(contour(f, {-8, -7, 8, 7}, 0.1), 0, 0, 5, 1e-3);
+  // A window wholly inside or outside the circle has no contour.
+  CHECK(contour(f, {-1, -1, 1, 1}, 0.1).empty());
+  CHECK(contour(f, {6, 6, 9, 9}, 0.1).empty());
+}
+
+TEST_CASE("view hooks: implicit-curve and circle-midpoint outline their exact circles", "[views][outline]") {
+  const Json implicit = parse_json_text(R"({"P":[[1,2,0],[1,0,2],[-25,0,0]],"start":[-5,0],"max_steps":100})", "t");
+  check_on_circle(find_algorithm("implicit-curve").outline(implicit, {-8, -8, 8, 8}, 0.05), 0, 0, 5, 1e-3);
+  const Json circle = parse_json_text(R"({"c":[3,-2],"r":40})", "t");
+  check_on_circle(find_algorithm("circle-midpoint").outline(circle, {-60, -60, 60, 60}, 0.5), 3, -2, 40, 1e-2);
+  // Zoomed far in on a large circle, the outline is still on it (a chord would not be).
+  const Json big = parse_json_text(R"({"c":[0,0],"r":4000000})", "t");
+  const auto lines = find_algorithm("circle-interior").outline(big, {3999990, -5, 4000010, 5}, 0.02);
+  REQUIRE(!lines.empty());
+  for (const auto& l : lines)
+    for (const auto& p : l) CHECK(std::fabs(std::hypot(p[0], p[1]) - 4000000) <= 1e-3);
+}
+
+TEST_CASE("view hooks: the cubic's outline is y = P(x) on the plotted columns, the Bezier's ends at its end points", "[views][outline]") {
+  for (const char* id : {"poly-forward-diff", "poly-horner"}) {
+    const Json in = parse_json_text(R"({"coeffs":["1/64",0,"-3/2",2],"xs":-12,"xe":13})", "t");
+    const auto lines = find_algorithm(id).outline(in, {-100, -100, 100, 100}, 0.25);
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0].front()[0] == -12);
+    CHECK(lines[0].back()[0] == 12);
+    for (const auto& p : lines[0]) {
+      const Rational x = num::to_rational(p[0]);
+      const Rational y = Rational(1, 64) * x * x * x - Rational(3, 2) * x + 2;
+      CHECK(std::fabs(p[1] - y.get_d()) <= 1e-12);
+    }
+    // Only the visible columns are sampled.
+    const auto part = find_algorithm(id).outline(in, {0, -100, 5, 100}, 0.25);
+    REQUIRE(part.size() == 1);
+    CHECK(part[0].front()[0] == 0);
+    CHECK(part[0].back()[0] == 5);
+  }
+  const Json b = parse_json_text(R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"n":6})", "t");
+  const auto lines = find_algorithm("bezier-forward-diff").outline(b, {0, 0, 1, 1}, 0.1);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].front() == std::array<double, 2>{0.5, 0});
+  CHECK(lines[0].back() == std::array<double, 2>{12, 6});
+}
+
+TEST_CASE("view hooks: every sample of a ray sweep is what the CLI computes on the sample's input", "[views][sweep]") {
+  const Json in = parse_json_text(R"({"ray":{"o":[0,0,10],"d":[0.30458447,0.30458447,-0.9024725]},"sphere":{"c":[1,2,0],"r":3}})", "t");
+  for (const char* id : {"ray-sphere-quadratic", "ray-box", "ray-plane", "ray-triangle-watertight"}) {
+    const Algorithm& alg = find_algorithm(id);
+    REQUIRE(alg.sweep);
+    REQUIRE(alg.sweep.sample);
+    Json input = parse_json_text(alg.example, "example");
+    if (std::string_view(id) == "ray-sphere-quadratic") input = in;
+    for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::exact}) {
+      SweepGrid g{9, 7, 0.1, -0.2, 0.21, 0.27, n == Numeric::f32 ? Numeric::f32 : Numeric::f64};
+      std::vector<float> out;
+      alg.sweep.run(input, n, g, out);
+      REQUIRE(out.size() == 63);
+      for (int j = 0; j < g.h; ++j)
+        for (int i = 0; i < g.w; ++i) {
+          const Json sample = alg.sweep.sample(input, g, i, j);
+          const Json r = alg.run(sample, n);
+          INFO(id << " " << numeric_name(n) << " sample " << sample.dump());
+          CHECK(r["hit"].get<bool>() == !std::isnan(out[std::size_t(j) * g.w + i]));
+        }
+    }
+  }
+}
+
+TEST_CASE("view hooks: the middle sample of a window centred on the marker is the input itself", "[views][sweep]") {
+  const Algorithm& alg = find_algorithm("ray-triangle-mt");
+  const Json in = parse_json_text(alg.example, "example");
+  const auto m = alg.sweep.marker(in);
+  REQUIRE(m);
+  const SweepGrid g{5, 5, (*m)[0], (*m)[1], 1e-3, 1e-3, Numeric::f64};
+  const Json s = alg.sweep.sample(in, g, 2, 2);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(parse_rational(s["ray"]["o"][k], "o") == parse_rational(in["ray"]["o"][k], "o"));
+    CHECK(parse_rational(s["ray"]["d"][k], "d") == parse_rational(in["ray"]["d"][k], "d"));
+  }
+}
+
+TEST_CASE("view hooks: declared views and table lines", "[views]") {
+  for (const Algorithm& a : catalog()) {
+    INFO(a.id);
+    REQUIRE(!a.views.empty());
+    for (std::string_view line : a.table_lines) CHECK(a.listing.find(line) != 0);
+    const bool table = std::find(a.views.begin(), a.views.end(), View::table) != a.views.end();
+    const bool image = std::find(a.views.begin(), a.views.end(), View::image) != a.views.end();
+    if (image) CHECK(a.sweep);
+    if (!a.table_lines.empty()) CHECK(table);
+  }
+  CHECK(find_algorithm("poly-forward-diff").table_lines == std::vector<std::string_view>{"start", "step"});
+  for (std::size_t k = 0; k < kViewNames.size(); ++k) CHECK(parse_view(kViewNames[k]) == static_cast<View>(k));
+  CHECK_FALSE(parse_view("tree"));
+}

@@ -1,0 +1,31 @@
+#include "view_registry.hpp"
+#include "image_view.hpp"
+#include "orbit_canvas.hpp"
+#include "pixel_canvas.hpp"
+#include "plot_view.hpp"
+#include "table_view.hpp"
+
+namespace sw::vis {
+namespace {
+
+template <class C> std::unique_ptr<Canvas> make_with(TextureHost& t) {
+  if constexpr (std::is_constructible_v<C, TextureHost&>) return std::make_unique<C>(t);
+  else return std::make_unique<C>();
+}
+
+constexpr ViewInfo kViews[] = {
+    {View::plane2d, "Plane", "The pixels and the 2D geometry of each step", make_with<PixelCanvas>},
+    {View::orbit3d, "3D", "The scene under an orbit camera", make_with<OrbitCanvas>},
+    {View::table, "Table", "One row per step (or per iteration), one column per recorded variable", make_with<TableCanvas>},
+    {View::image, "Sweep", "The algorithm run over a grid of inputs, against exact", make_with<ImageCanvas>},
+    {View::plot, "Plot", "A column of the table over its rows, against an exact run", make_with<PlotCanvas>},
+};
+static_assert(std::size(kViews) == kViewNames.size(), "one registry entry per View");
+
+}  // namespace
+
+const ViewInfo& view_info(View view) { return kViews[static_cast<std::size_t>(view)]; }
+
+std::unique_ptr<Canvas> make_canvas(View view, TextureHost& textures) { return view_info(view).make(textures); }
+
+}  // namespace sw::vis
