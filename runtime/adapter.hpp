@@ -13,7 +13,10 @@
 //   static std::size_t ops(const Output&);                   // output units, for ns per op
 //   static Output oracle(const Input&);                      // independent exact result
 //   static std::vector<BenchSet<Input>> bench_sets();        // seeded
-// Optionally: static void write_members(const Output&, std::ostream&) writes the result object's
+// (AlgorithmSpec in spec.hpp checks these.) Optional hooks, each named in the Spec's
+// `static constexpr std::array hooks{Hook::...}` (a hook defined but not named, or named but not
+// defined, fails to compile):
+//             static void write_members(const Output&, std::ostream&) writes the result object's
 //             members without braces, for large results (else to_json is used);
 //             static double error(const Output& got, const Output& exact), reported as max;
 //             static std::size_t estimate_steps(const Input&): an upper estimate the recorder
@@ -33,6 +36,7 @@
 #include <tuple>
 #include <type_traits>
 #include "catalog.hpp"
+#include "spec.hpp"
 #include "core/jsonl_probe.hpp"
 
 namespace sw {
@@ -46,7 +50,7 @@ template <class Spec> struct FiltersOf {
   using type = std::tuple<Interval>;
 };
 template <class Spec>
-  requires requires { typename Spec::Filters; }
+  requires(names_hook<Spec>(Hook::filters))
 struct FiltersOf<Spec> {
   using type = typename Spec::Filters;
 };
@@ -221,7 +225,7 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
   std::vector<BenchRow> rows;
   for (const auto& set : Spec::bench_sets()) {
     if (!only_set.empty() && set.name != only_set) continue;
-    if constexpr (requires { Spec::bench_runs(set.name, n); })
+    if constexpr (names_hook<Spec>(Hook::bench_runs))
       if (!Spec::bench_runs(set.name, n)) continue;
     BenchRow row;
     row.set = set.name;
@@ -248,7 +252,7 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
       for (std::size_t i = 0; i < outs.size(); ++i) {
         row.ops += Spec::ops(outs[i]);
         if (!(outs[i] == exact[i])) ++row.mismatches;
-        if constexpr (requires { Spec::error(outs[i], exact[i]); })
+        if constexpr (names_hook<Spec>(Hook::error))
           row.max_error = std::max(row.max_error, Spec::error(outs[i], exact[i]));
       }
       row.ns_per_op = best * 1e9 / static_cast<double>(std::max<std::size_t>(row.ops, 1));
@@ -261,14 +265,15 @@ template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, c
 
 template <class Spec> void fill_view_hooks(Algorithm& a);  // sweep.hpp: table rows, sweep, outline
 
-template <class Spec> Algorithm make_algorithm() {
+template <AlgorithmSpec Spec> Algorithm make_algorithm() {
+  static_assert(HookNamedAndDefined<hook_mismatch<Spec>()>::ok);
   Algorithm a;
   a.id = Spec::Algo::id;
   a.family = Spec::family;
   a.summary = Spec::Algo::summary;
   a.listing = Spec::Algo::listing();
   a.views.assign(Spec::views.begin(), Spec::views.end());
-  if constexpr (requires { Spec::handles(); }) a.handles = Spec::handles();
+  if constexpr (names_hook<Spec>(Hook::handles)) a.handles = Spec::handles();
   a.numerics.assign(Spec::numerics.begin(), Spec::numerics.end());
   a.example = Spec::example;
   auto result = [](const auto& out, Numeric n, bool fell_back) {
@@ -291,7 +296,7 @@ template <class Spec> Algorithm make_algorithm() {
     const typename Spec::Input in = Spec::parse(j, n);
     auto out = compute_mode<Spec>(in, n, [&](auto t, auto&& compute) {
       auto r = std::make_unique<Recorder<typename decltype(t)::type>>();
-      if constexpr (requires { Spec::estimate_steps(in); }) r->reserve(std::min<std::size_t>(Spec::estimate_steps(in), std::size_t{1} << 27));
+      if constexpr (names_hook<Spec>(Hook::estimate_steps)) r->reserve(std::min<std::size_t>(Spec::estimate_steps(in), std::size_t{1} << 27));
       auto o = compute(*r);
       rec.trace = std::move(r);
       return o;
@@ -307,7 +312,7 @@ template <class Spec> Algorithm make_algorithm() {
       probe.finish();
       return o;
     }, &fb);
-    if constexpr (requires { Spec::write_members(out, os); }) {
+    if constexpr (names_hook<Spec>(Hook::write_members)) {
       os << "{\"result\":{";
       Spec::write_members(out, os);
       if (n == Numeric::filtered) os << ",\"fallback\":" << (fb ? "true" : "false");
@@ -317,7 +322,7 @@ template <class Spec> Algorithm make_algorithm() {
     }
   };
   a.oracle = [](const Json& j) { return Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact))); };
-  if constexpr (requires(Json r) { Spec::canonical(r); }) a.canonical = [](const Json& r) { return Spec::canonical(r); };
+  if constexpr (names_hook<Spec>(Hook::canonical)) a.canonical = [](const Json& r) { return Spec::canonical(r); };
   else a.canonical = [](const Json& r) { return r; };
   a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };
   fill_view_hooks<Spec>(a);

@@ -94,19 +94,19 @@ template <class Spec> void run_sweep(const Json& j, Numeric n, const SweepGrid& 
 }
 
 template <class Spec> void fill_view_hooks(Algorithm& a) {
-  if constexpr (requires { Spec::table_lines; }) {
+  if constexpr (names_hook<Spec>(Hook::table_lines)) {
     static_assert(table_lines_exist<Spec>(), "table_lines names a line the listing does not have");
     a.table_lines.assign(Spec::table_lines.begin(), Spec::table_lines.end());
   }
-  if constexpr (requires(const typename Spec::Input& in, const SweepGrid& g) { Spec::template sweeper<Rational>(in, g); }) {
+  if constexpr (names_hook<Spec>(Hook::sweeper)) {
     a.sweep.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec>(j, n, g, out); };
-    if constexpr (requires(const typename Spec::Input& in) { Spec::sweep_marker(in); })
+    if constexpr (names_hook<Spec>(Hook::sweep_marker))
       a.sweep.marker = [](const Json& j) { return Spec::sweep_marker(Spec::parse(j, Numeric::exact)); };
-    if constexpr (requires { Spec::sweep_caption; }) a.sweep.caption = Spec::sweep_caption;
-    if constexpr (requires(const typename Spec::Input& in, const SweepGrid& g) { Spec::sweep_input(Json(), in, g, 0, 0); })
+    if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
+    if constexpr (names_hook<Spec>(Hook::sweep_input))
       a.sweep.sample = [](const Json& j, const SweepGrid& g, int x, int y) { return Spec::sweep_input(j, Spec::parse(j, Numeric::exact), g, x, y); };
   }
-  if constexpr (requires(const typename Spec::Input& in, const Rect2& r) { Spec::outline(in, r, 1.0); })
+  if constexpr (names_hook<Spec>(Hook::outline))
     a.outline = [](const Json& j, const Rect2& w, double cell) { return Spec::outline(Spec::parse(j, Numeric::exact), w, cell); };
 }
 

@@ -16,6 +16,7 @@ struct BezierInput {
 };
 
 struct BezierSpec {
+  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::handles, Hook::write_members, Hook::estimate_steps};
   using Algo = curves::BezierForwardDiff;
   using Input = BezierInput;
   using Output = PixelsOutput;

@@ -50,6 +50,7 @@ CubicInput parse_cubic(const Json& j, Numeric n) {
 }
 
 template <class AlgoT> struct CubicSpec {
+  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::write_members, Hook::estimate_steps, Hook::bench_runs};
   using Algo = AlgoT;
   using Input = CubicInput;
   using Output = PixelsOutput;
@@ -114,6 +115,7 @@ curves::CircleInput parse_circle(const Json& j) {
 }
 
 template <class AlgoT> struct CircleSpec {
+  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::handles, Hook::write_members, Hook::estimate_steps, Hook::canonical};
   using Algo = AlgoT;
   using Input = curves::CircleInput;
   using Output = PixelsOutput;
@@ -231,6 +233,7 @@ struct ImplicitOutput {
 
 // No int mode: coefficients may be fractions, and P at the half-integer midpoints is not an integer.
 struct ImplicitSpec {
+  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::handles, Hook::estimate_steps};
   using Algo = curves::ImplicitCurve;
   using Input = ImplicitInput;
   using Output = ImplicitOutput;

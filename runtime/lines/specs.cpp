@@ -56,6 +56,7 @@ std::vector<BenchSet<SegmentInput>> segment_bench_sets(bool integer_endpoints) {
 }
 
 template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::handles, Hook::write_members};  // write_members: each Spec below
   using Algo = AlgoT;
   using Input = SegmentInput;
   using Output = PixelsOutput;

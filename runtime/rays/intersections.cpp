@@ -247,6 +247,7 @@ std::array<double, 3> sample_origin(const SweepFrame& f, const SweepGrid& g, int
 }
 
 template <class AlgoT, Prim P> struct RaySpec {
+  static constexpr std::array hooks{Hook::filters, Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_marker, Hook::error};
   using Algo = AlgoT;
   using Input = RayInput;
   using Output = RayOutput;

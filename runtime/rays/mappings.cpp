@@ -92,6 +92,7 @@ double values_error(const ValuesOutput& got, const ValuesOutput& ref) {
 }
 
 struct CameraSpec {
+  static constexpr std::array hooks{Hook::error};
   using Algo = ray::CameraRayAlgo;
   using Input = CameraInput;
   using Output = ValuesOutput;
@@ -135,6 +136,7 @@ struct SphereUVInput {
   Rational r;
 };
 struct SphereUVSpec {
+  static constexpr std::array hooks{Hook::error};
   using Algo = ray::SphereUVAlgo;
   using Input = SphereUVInput;
   using Output = ValuesOutput;

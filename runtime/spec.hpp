@@ -1,0 +1,100 @@
+// The Spec concept: what make_algorithm (adapter.hpp) needs of an algorithm's Spec. Besides the
+// required members, a Spec may define optional hooks; it names the ones it defines in
+//   static constexpr std::array hooks{Hook::handles, Hook::error, ...};
+// and the concept holds the names against the definitions both ways. A misspelt hook, or one with
+// the wrong signature, is then a compile error ("names a hook it does not define") instead of a
+// hook silently ignored. The hooks' meanings are listed in adapter.hpp and sweep.hpp.
+#pragma once
+#include <array>
+#include <concepts>
+#include <ostream>
+#include <string>
+#include <vector>
+#include "catalog.hpp"
+
+namespace sw {
+
+enum class Hook : std::uint8_t {
+  filters,         // using Filters = std::tuple<stages...>
+  handles,         // static std::vector<Handle> handles()
+  estimate_steps,  // static std::size_t estimate_steps(const Input&)
+  write_members,   // static void write_members(const Output&, std::ostream&)
+  canonical,       // static Json canonical(const Json& result)
+  error,           // static double error(const Output& got, const Output& exact)
+  bench_runs,      // static bool bench_runs(const std::string& set, Numeric)
+  table_lines,     // static constexpr std::array table_lines{"name"sv, ...}
+  sweeper,         // template <class Num> static auto sweeper(const Input&, const SweepGrid&), with sweep_value
+  sweep_marker,    // static std::optional<std::array<double, 2>> sweep_marker(const Input&)
+  sweep_caption,   // static constexpr std::string_view sweep_caption
+  sweep_input,     // static Json sweep_input(Json, const Input&, const SweepGrid&, int, int)
+  outline,         // static std::vector<Polyline2> outline(const Input&, const Rect2&, double cell)
+};
+inline constexpr std::size_t kHookCount = 13;
+
+template <class S> constexpr bool names_hook(Hook h) {
+  if constexpr (requires { S::hooks; })
+    for (Hook x : S::hooks)
+      if (x == h) return true;
+  return false;
+}
+
+template <class S> constexpr bool defines_hook(Hook h) {
+  using In = typename S::Input;
+  using Out = typename S::Output;
+  switch (h) {
+    case Hook::filters: return requires { typename S::Filters; };
+    case Hook::handles: return requires { { S::handles() } -> std::same_as<std::vector<Handle>>; };
+    case Hook::estimate_steps: return requires(const In& in) { { S::estimate_steps(in) } -> std::convertible_to<std::size_t>; };
+    case Hook::write_members: return requires(const Out& o, std::ostream& os) { S::write_members(o, os); };
+    case Hook::canonical: return requires(const Json& r) { { S::canonical(r) } -> std::convertible_to<Json>; };
+    case Hook::error: return requires(const Out& o) { { S::error(o, o) } -> std::convertible_to<double>; };
+    case Hook::bench_runs: return requires(const std::string& set, Numeric n) { { S::bench_runs(set, n) } -> std::convertible_to<bool>; };
+    case Hook::table_lines: return requires { S::table_lines; };
+    case Hook::sweeper:
+      return requires(const In& in, const SweepGrid& g, const Out& o) {
+        S::template sweeper<Rational>(in, g);
+        { S::sweep_value(o) } -> std::convertible_to<float>;
+      };
+    case Hook::sweep_marker: return requires(const In& in) { S::sweep_marker(in); };
+    case Hook::sweep_caption: return requires { { S::sweep_caption } -> std::convertible_to<std::string_view>; };
+    case Hook::sweep_input: return requires(const In& in, const SweepGrid& g) { { S::sweep_input(Json(), in, g, 0, 0) } -> std::convertible_to<Json>; };
+    case Hook::outline: return requires(const In& in, const Rect2& r) { S::outline(in, r, 1.0); };
+  }
+  return false;
+}
+
+// The first hook named but not defined, or defined but not named; kHookCount if none.
+template <class S> constexpr std::size_t hook_mismatch() {
+  for (std::size_t k = 0; k < kHookCount; ++k)
+    if (names_hook<S>(Hook(k)) != defines_hook<S>(Hook(k))) return k;
+  return kHookCount;
+}
+
+template <class S>
+concept AlgorithmSpec = requires {
+  typename S::Algo;
+  typename S::Input;
+  typename S::Output;
+  { S::Algo::id } -> std::convertible_to<std::string_view>;
+  { S::Algo::listing() } -> std::same_as<Listing>;
+  { S::family } -> std::convertible_to<std::string_view>;
+  S::views.size();
+  S::numerics.size();
+  { S::example } -> std::convertible_to<std::string>;
+  S::bench_sets();
+} && requires(const Json& j, Numeric n, const typename S::Input& in, const typename S::Output& o) {
+  { S::parse(j, n) } -> std::same_as<typename S::Input>;
+  { S::to_json(o) } -> std::convertible_to<Json>;
+  { S::ops(o) } -> std::convertible_to<std::size_t>;
+  { S::oracle(in) } -> std::same_as<typename S::Output>;
+  { o == o } -> std::convertible_to<bool>;
+};
+
+// Instantiated by make_algorithm: a mismatch fails here, and the compiler's message shows K, the
+// Hook that is named but not defined (or misspelt), or defined but not named.
+template <std::size_t K> struct HookNamedAndDefined {
+  static_assert(K == kHookCount, "a Spec's `hooks` and its definitions disagree at Hook(K) (runtime/spec.hpp)");
+  static constexpr bool ok = true;
+};
+
+}  // namespace sw
