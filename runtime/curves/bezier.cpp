@@ -1,7 +1,10 @@
-// The curves family's cubic Bezier: bezier-forward-diff's catalog entry (registered by specs.cpp).
+// The curves family's cubic Bezier: bezier-forward-diff's and bezier-de-casteljau's catalog entries
+// (registered by specs.cpp).
 // Semantics: docs/curves/semantics.md.
+#include <bit>
 #include <random>
 #include "adapter.hpp"
+#include "curves/bezier_de_casteljau.hpp"
 #include "curves/bezier_forward_diff.hpp"
 #include "curves/outlines.hpp"
 #include "curves_bezier_oracle.hpp"
@@ -27,8 +30,9 @@ struct BezierSpec {
   static std::vector<Polyline2> outline(const Input& in, const Rect2&, double cell) { return curves::bezier_outline(in.p, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"n":6})";
-  static Input parse(const Json& j, Numeric) {
-    only_keys(j, {"bezier", "n"}, "input");
+  // The control points, and the number of pieces under `key` (n itself, or a depth: n = 2^depth).
+  static Input parse_pieces(const Json& j, const char* key, std::int64_t max, bool depth) {
+    only_keys(j, {"bezier", key}, "input");
     const Json& b = j["bezier"];
     if (!b.is_array() || b.size() != 4) throw InputError("input.bezier: expected four control points [[x,y],[x,y],[x,y],[x,y]]");
     Input in;
@@ -41,9 +45,11 @@ struct BezierSpec {
         check_digits(in.p[i][a], what + "[" + std::to_string(a) + "]");
       }
     }
-    in.n = parse_integer(j["n"], "input.n", 1, kMaxSegments);
+    const std::int64_t v = parse_integer(j[key], std::string("input.") + key, depth ? 0 : 1, max);
+    in.n = depth ? std::int64_t{1} << v : v;
     return in;
   }
+  static Input parse(const Json& j, Numeric) { return parse_pieces(j, "n", kMaxSegments, false); }
   static std::vector<Handle> handles() {
     std::vector<Handle> h;
     for (int i = 0; i < 4; ++i) h.push_back({"/bezier/" + std::to_string(i), Handle::Kind::point2, 8, "P" + std::to_string(i)});
@@ -70,7 +76,9 @@ struct BezierSpec {
     return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 8 * static_cast<std::size_t>(in.n) + 16;
   }
   static Output oracle(const Input& in) { return {oracle::bezier_pixels(in.p, in.n)}; }
-  static std::vector<BenchSet<Input>> bench_sets() {
+  static std::vector<BenchSet<Input>> bench_sets() { return bench_sets_for(false); }
+  // Random curves of 4 to 32 pieces (powers of two for a depth), and curves of 1024 pieces.
+  static std::vector<BenchSet<Input>> bench_sets_for(bool powers_of_two) {
     std::mt19937_64 rng(20261125);
     auto u = [&](long lo, long hi) {
       Rational r(std::uniform_int_distribution<long>(lo, hi)(rng), 8);
@@ -81,10 +89,10 @@ struct BezierSpec {
     for (int i = 0; i < 1000; ++i) {
       Input in;
       for (auto& c : in.p) c = {u(-2000, 2000), u(-2000, 2000)};
-      in.n = std::uniform_int_distribution<std::int64_t>(4, 32)(rng);
+      in.n = powers_of_two ? std::int64_t{1} << std::uniform_int_distribution<int>(2, 5)(rng) : std::uniform_int_distribution<std::int64_t>(4, 32)(rng);
       random.inputs.push_back(in);
     }
-    // Many short segments: the forward-difference table runs long, the DDA segments are short.
+    // Many short pieces: the forward-difference table runs long, the DDA segments are short.
     for (int i = 0; i < 20; ++i) {
       Input in;
       for (auto& c : in.p) c = {u(-8000, 8000), u(-8000, 8000)};
@@ -95,8 +103,32 @@ struct BezierSpec {
   }
 };
 
+// The same curves cut by de Casteljau halving: input {"bezier": [...], "depth": d}, n = 2^d pieces.
+struct BezierDeCasteljauSpec : BezierSpec {
+  using Algo = curves::BezierDeCasteljau;
+  static constexpr std::int64_t kMaxDepth = 10;  // 1024 pieces, as bezier-forward-diff's bound
+  static constexpr std::array<std::string_view, 1> table_lines{"leaf"};  // one row per chord
+  static inline const std::string example = R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"depth":3})";
+  static Input parse(const Json& j, Numeric) { return parse_pieces(j, "depth", kMaxDepth, true); }
+  template <class Num> static curves::BezierDepth<Num> prepare(const Input& in) {
+    curves::BezierDepth<Num> b;
+    for (int i = 0; i < 4; ++i) b.p[i] = to_num<Num>(in.p[i]);
+    b.depth = std::countr_zero(static_cast<std::uint64_t>(in.n));
+    return b;
+  }
+  template <class Num, class Probe> static Output compute(const curves::BezierDepth<Num>& b, Probe& probe) {
+    Output o;
+    curves::bezier_de_casteljau<Num>(b, o.pixels, probe);
+    return o;
+  }
+  static std::vector<BenchSet<Input>> bench_sets() { return bench_sets_for(true); }
+};
+
 }  // namespace
 
-void register_bezier(std::vector<Algorithm>& out) { out.push_back(make_algorithm<BezierSpec>()); }
+void register_bezier(std::vector<Algorithm>& out) {
+  out.push_back(make_algorithm<BezierSpec>());
+  out.push_back(make_algorithm<BezierDeCasteljauSpec>());
+}
 
 }  // namespace sw

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include "catalog.hpp"
+#include "curves/bezier_de_casteljau.hpp"
 #include "curves/bezier_forward_diff.hpp"
 #include "curves_bezier_oracle.hpp"
 #include "lines_oracle.hpp"
@@ -156,4 +157,159 @@ TEST_CASE("curves bezier: check follows the nested listing and names a step from
   const CheckReport rep = check_trace(bad, false);
   CHECK(rep.status == 1);
   CHECK_THAT(rep.message, Catch::Contains("listing: expected a step of dda-line"));
+}
+
+namespace {
+
+// The cubic's blossom f(t1, t2, t3): symmetric, affine in each argument, f(t, t, t) = B(t). The
+// piece of the curve over [a, b] has control points f(a,a,a), f(a,a,b), f(a,b,b), f(b,b,b).
+Vec2<Rational> blossom(const std::array<Vec2<Rational>, 4>& p, const Rational& t1, const Rational& t2, const Rational& t3) {
+  const Rational s1 = 1 - t1, s2 = 1 - t2, s3 = 1 - t3;
+  const Rational w[4] = {s1 * s2 * s3, t1 * s2 * s3 + s1 * t2 * s3 + s1 * s2 * t3, t1 * t2 * s3 + t1 * s2 * t3 + s1 * t2 * t3, t1 * t2 * t3};
+  Vec2<Rational> q{0, 0};
+  for (int i = 0; i < 4; ++i) q = q + Rational(w[i]) * p[i];
+  return q;
+}
+
+template <class Num> std::vector<Pixel> run_de_casteljau(const std::array<Vec2<Rational>, 4>& p, int depth) {
+  curves::BezierDepth<Num> b;
+  for (int i = 0; i < 4; ++i) b.p[i] = {num::from_rational<Num>(p[i].x), num::from_rational<Num>(p[i].y)};
+  b.depth = depth;
+  std::vector<Pixel> out;
+  NoProbe none;
+  curves::bezier_de_casteljau<Num>(b, out, none);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("curves bezier: de Casteljau in exact and filtered equals the oracle at n = 2^depth on 10^4 random curves", "[curves][bezier]") {
+  std::mt19937_64 rng(29);
+  auto u = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); };
+  std::size_t uncertain = 0;
+  for (int i = 0; i < 10000; ++i) {
+    std::array<Vec2<Rational>, 4> p;
+    for (auto& c : p) c = {ratio(u(-400, 400), 8), ratio(u(-400, 400), 8)};
+    const int depth = int(u(0, 4));
+    const auto want = oracle::bezier_pixels(p, std::int64_t{1} << depth);
+    if (i % 4 == 0) REQUIRE(run_de_casteljau<Rational>(p, depth) == want);
+    std::optional<std::vector<Pixel>> f;
+    try {
+      f = run_de_casteljau<Interval>(p, depth);
+    } catch (const Uncertain&) {
+      ++uncertain;
+    }
+    if (f) REQUIRE(*f == want);
+  }
+  // Halving is exact in binary: intervals stay points unless a pixel boundary needs the exact run.
+  CHECK(uncertain < 10000 / 20);
+}
+
+TEST_CASE("curves bezier: every value a de Casteljau step records is the blossom of its piece", "[curves][bezier]") {
+  const std::array<Vec2<Rational>, 4> p = {Vec2<Rational>{ratio(1, 2), 0}, {3, ratio(29, 4)}, {ratio(19, 2), ratio(-5, 3)}, {12, 6}};
+  for (int depth : {0, 1, 3}) {
+    INFO("depth " << depth);
+    curves::BezierDepth<Rational> b{p, depth};
+    Recorder<Rational> t;
+    std::vector<Pixel> out;
+    curves::bezier_de_casteljau<Rational>(b, out, t);
+    REQUIRE(out == oracle::bezier_pixels(p, std::int64_t{1} << depth));
+    const Listing L = curves::BezierDeCasteljau::listing();
+    // The walk's call stack, followed from the steps: piece (level, k) covers [k, k + 1] / 2^(depth - level).
+    struct Node {
+      std::int64_t level, k;
+      bool right_started;
+    };
+    std::vector<Node> stack;
+    std::int64_t next_leaf = 0;
+    std::pair<std::int64_t, std::int64_t> announced{depth, 0};  // the piece the next call must be
+    std::set<std::pair<std::int64_t, std::int64_t>> called;
+    auto ends = [&] {
+      const Node& n = stack.back();
+      const std::int64_t pieces = std::int64_t{1} << (depth - n.level);
+      return std::pair{ratio(n.k, pieces), ratio(n.k + 1, pieces)};
+    };
+    for (std::size_t s = 0; s < t.size(); ++s) {
+      const StepRecord& st = t.at(s);
+      if (st.scope) {  // the chord's dda-line: its own tests check its steps
+        CHECK(t.scope_id(st.scope) == "dda-line");
+        continue;
+      }
+      const std::string_view line = L.lines[st.line - 1].name;
+      INFO("step " << s << " line " << line);
+      testing::StepValues v = testing::values_of(t, s);
+      const std::uint32_t items = st.geo_end - st.geo_begin;
+      const GeoRecord* g = items ? &t.geo_at(st.geo_begin) : nullptr;
+      auto vec_is = [&](const std::string& name, const Vec2<Rational>& want) {
+        CHECK(v[name + ".x"] == want.x);
+        CHECK(v[name + ".y"] == want.y);
+      };
+      if (line == "call") {
+        CHECK(v["level"] == announced.first);
+        CHECK(v["k"] == announced.second);
+        stack.push_back({announced.first, announced.second, false});
+        CHECK(called.insert(announced).second);  // each piece once
+        const auto [a, bb] = ends();
+        REQUIRE(items == 1);
+        REQUIRE(g->kind == GeoKind::polyline);
+        REQUIRE(g->count == 8);
+        const Vec2<Rational> q[4] = {blossom(p, a, a, a), blossom(p, a, a, bb), blossom(p, a, bb, bb), blossom(p, bb, bb, bb)};
+        for (int i = 0; i < 4; ++i) {
+          CHECK(t.num_value(g->slot + 2 * i) == q[i].x);
+          CHECK(t.num_value(g->slot + 2 * i + 1) == q[i].y);
+        }
+      } else if (line == "leaf") {
+        CHECK(v["level"] == 0);
+        CHECK(v["k"] == next_leaf);  // the leaves come in order along the curve
+        ++next_leaf;
+        REQUIRE(!stack.empty());
+        CHECK(stack.back().level == 0);
+        const auto [a, bb] = ends();
+        REQUIRE(items == 1);
+        REQUIRE(g->kind == GeoKind::segment2);
+        CHECK(t.num_value(g->slot) == blossom(p, a, a, a).x);
+        CHECK(t.num_value(g->slot + 1) == blossom(p, a, a, a).y);
+        CHECK(t.num_value(g->slot + 2) == blossom(p, bb, bb, bb).x);
+        CHECK(t.num_value(g->slot + 3) == blossom(p, bb, bb, bb).y);
+        stack.pop_back();  // returns: and so does every ancestor whose second half this was
+        while (!stack.empty() && stack.back().right_started) stack.pop_back();
+      } else if (line == "halve") {
+        REQUIRE(!stack.empty());
+        const auto [a, bb] = ends();
+        const Rational m = (a + bb) / 2;
+        vec_is("P01", blossom(p, a, a, m));
+        vec_is("P12", blossom(p, a, m, bb));
+        vec_is("P23", blossom(p, m, bb, bb));
+        CHECK(items == 0);
+      } else if (line == "halve2") {
+        const auto [a, bb] = ends();
+        const Rational m = (a + bb) / 2;
+        vec_is("P012", blossom(p, a, m, m));
+        vec_is("P123", blossom(p, m, m, bb));
+        vec_is("M", oracle::bezier_point(p, m));
+        REQUIRE(items == 1);
+        CHECK(g->kind == GeoKind::point2);
+        CHECK(t.num_value(g->slot) == oracle::bezier_point(p, m).x);
+        CHECK(t.num_value(g->slot + 1) == oracle::bezier_point(p, m).y);
+        CHECK(g->label == std::string("M"));
+      } else if (line == "left" || line == "right") {
+        REQUIRE(!stack.empty());
+        Node& n = stack.back();
+        if (line == "right") n.right_started = true;
+        announced = {n.level - 1, 2 * n.k + (line == "right")};
+        CHECK(v["level"] == announced.first);
+        CHECK(v["k"] == announced.second);
+        CHECK(items == 0);
+      } else if (line == "done") {
+        CHECK(v["pieces"] == (std::int64_t{1} << depth));
+        CHECK(items == 0);
+      } else {
+        FAIL("no expectation for line " << line);
+      }
+      testing::require_all_checked(v, s);
+    }
+    CHECK(next_leaf == (std::int64_t{1} << depth));
+    CHECK(stack.empty());
+    CHECK(called.size() == (std::size_t{2} << depth) - 1);  // every node of the binary tree
+  }
 }
