@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 STEPWISE=${1:-build}/stepwise
 shot() {  # lesson [step]; without a step, the lesson's own start step
   "$STEPWISE" render --lesson "lessons/$1.md" ${2:+--step "$2"} --out "lessons/$1.png" --size 1280x800
-  if command -v convert >/dev/null; then convert "lessons/$1.png" -strip +dither -colors 255 "PNG8:lessons/$1.png"; fi
+  if [ -x /usr/bin/convert ]; then /usr/bin/convert "lessons/$1.png" -strip +dither -colors 255 "PNG8:lessons/$1.png"; fi
 }
 shot 01-dda-line 14        # pixels so far, with dp0 in the state panel
 shot 02-grid-walk 6        # the second cell of the two-pixel corner case

@@ -95,6 +95,7 @@ Scene3 Scene3::from_model(const TraceModel& m, const std::vector<std::optional<V
   sc.centre = 0.5 * (all.lo + all.hi);
   sc.radius = std::max(all.radius(), 1e-6);
   sc.primitive_size = prims.empty() ? sc.radius : std::max(prims.radius(), 1e-6);
+  sc.primitive_centre = prims.empty() ? sc.centre : 0.5 * (prims.lo + prims.hi);
   return sc;
 }
 
@@ -162,18 +163,15 @@ void OrbitCanvas::face(const Scene3& sc) {
 }
 
 void OrbitCanvas::focus(const TraceModel& m, std::size_t step, double) {
-  // Centre on the latest 3D point at or before the step (hit, closest approach), framing the
-  // scene's primitives around it: what matters when the whole scene is 1e8 units wide.
+  // Centre on the latest 3D point at or before the step (hit, closest approach), else on the
+  // primitives, framing them around it: what matters when the whole scene is 1e8 units wide.
   const Scene3 sc = Scene3::from_model(m, handle_points3(m.algorithm(), m.input()));
   std::optional<V3> at;
   const TraceView& t = m.trace();
   for (std::size_t s = std::min(step, m.last()) + 1; s-- > 0 && !at;)
     for (std::uint32_t g = t.at(s).geo_begin; g < t.at(s).geo_end; ++g)
       if (t.geo_at(g).kind == GeoKind::point3) at = item_of(t, g).at(0);
-  if (!at) {
-    fit_pending_ = true;
-    return;
-  }
+  if (!at) at = sc.primitive_centre;  // no point yet: the primitive itself
   face(sc);
   cam_.frame(*at, std::min(2.5 * sc.primitive_size, sc.radius));
   fit_pending_ = false;

@@ -29,6 +29,7 @@ struct Scene3 {
   V3 centre{0, 0, 0};
   double radius = 1;          // a ball holding the scene
   double primitive_size = 1;  // the lasting items other than rays: what focus frames
+  V3 primitive_centre{0, 0, 0};
   static Scene3 from_model(const TraceModel& m, const std::vector<std::optional<V3>>& handles);
 };
 

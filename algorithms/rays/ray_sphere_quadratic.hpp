@@ -30,7 +30,10 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     probe.step(L::coeffs, StepKind::init).num("a", a).num("b", b).num("c", cc)
         .ray(r.o, r.d).keep().sphere(c, radius).keep();
   const Num disc = Num(b * b - Num(4) * a * cc);
-  if constexpr (Probe::on) probe.step(L::disc, StepKind::decide).num("D", disc);
+  if constexpr (Probe::on) {  // the closest approach t_c = -b / 2a, and c's distance to it coloured by D's sign
+    const Vec3<Num> closest = r.o + Num(Num(-b) / Num(Num(2) * a)) * r.d;
+    probe.step(L::disc, StepKind::decide).num("D", disc).point(closest).label("t_c").keep().segment(c, closest).label("D").value(disc).keep();
+  }
   if (disc < Num(0)) {
     if constexpr (Probe::on) probe.step(L::miss, StepKind::miss);
     return out;
