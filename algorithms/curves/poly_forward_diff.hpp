@@ -47,6 +47,8 @@ struct PolyForwardDiff {
   X(done, "done")
   SW_LISTING("Cubic by forward differences", SW_LINES_POLY_FORWARD_DIFF)
 #undef SW_LINES_POLY_FORWARD_DIFF
+  // The algorithm itself, callable as PolyForwardDiff{}(...): poly_forward_diff below.
+  template <NumberType Num, StepProbe Probe> void operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -73,6 +75,10 @@ void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& prob
     if constexpr (Probe::on) probe.step(L::step, StepKind::advance).idx("x", x + 1).num("y", yv).num("d1", d1).num("d2", d2);
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("x", x);
+}
+
+template <NumberType Num, StepProbe Probe> void PolyForwardDiff::operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const {
+  poly_forward_diff<Num>(p, out, probe);
 }
 
 }  // namespace sw::curves

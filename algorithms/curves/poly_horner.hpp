@@ -15,6 +15,8 @@ struct PolyHorner {
   X(done, "done")
   SW_LISTING("Cubic by Horner's rule", SW_LINES_POLY_HORNER)
 #undef SW_LINES_POLY_HORNER
+  // The algorithm itself, callable as PolyHorner{}(...): poly_horner below.
+  template <NumberType Num, StepProbe Probe> void operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -31,6 +33,10 @@ void poly_horner(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("x", x).idx("j", px.y).pixel(px).point(Vec2<Num>{Num(x), y});
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done);
+}
+
+template <NumberType Num, StepProbe Probe> void PolyHorner::operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const {
+  poly_horner<Num>(p, out, probe);
 }
 
 }  // namespace sw::curves

@@ -31,6 +31,8 @@ struct RayBox {
   X(hit, "hit: t <- t_near if t_near > 0, else t_far     -- origin inside: the exit point")
   SW_LISTING("Slab test", SW_LINES_RAY_BOX)
 #undef SW_LINES_RAY_BOX
+  // The algorithm itself, callable as RayBox{}(...): ray_box below.
+  template <NumberType Num, StepProbe Probe> BoxHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -84,6 +86,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     else probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   }
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline BoxHit<Num> RayBox::operator()(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) const {
+  return ray_box<Num>(r, lo, hi, probe);
 }
 
 }  // namespace sw::ray

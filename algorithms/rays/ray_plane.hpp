@@ -24,6 +24,8 @@ struct RayPlane {
   X(hit, "hit: t <- num / den; the point o + t d")
   SW_LISTING("Ray-plane", SW_LINES_RAY_PLANE)
 #undef SW_LINES_RAY_PLANE
+  // The algorithm itself, callable as RayPlane{}(...): ray_plane below.
+  template <NumberType Num, StepProbe Probe> PlaneHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -48,6 +50,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   out.hit = true, out.t = Num(num / den);
   if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline PlaneHit<Num> RayPlane::operator()(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) const {
+  return ray_plane<Num>(r, p, n, probe);
 }
 
 }  // namespace sw::ray

@@ -31,6 +31,8 @@ struct RaySphereGeometric {
   X(hit, "hit at o + t d")
   SW_LISTING("Geometric ray-sphere", SW_LINES_RAY_SPHERE_GEOMETRIC)
 #undef SW_LINES_RAY_SPHERE_GEOMETRIC
+  // The algorithm itself, callable as RaySphereGeometric{}(...): ray_sphere_geometric below.
+  template <NumberType Num, StepProbe Probe> SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -67,6 +69,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   out.hit = true;
   if constexpr (Probe::on) probe.step(L::root, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline SphereHit<Num> RaySphereGeometric::operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const {
+  return ray_sphere_geometric<Num>(r, c, radius, probe);
 }
 
 }  // namespace sw::ray

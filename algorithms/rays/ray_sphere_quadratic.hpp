@@ -18,6 +18,8 @@ struct RaySphereQuadratic {
   X(none, "miss                                         -- the sphere is behind")
   SW_LISTING("Quadratic ray-sphere", SW_LINES_RAY_SPHERE_QUADRATIC)
 #undef SW_LINES_RAY_SPHERE_QUADRATIC
+  // The algorithm itself, callable as RaySphereQuadratic{}(...): ray_sphere_quadratic below.
+  template <NumberType Num, StepProbe Probe> SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -52,6 +54,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     else probe.step(L::none, StepKind::miss);
   }
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline SphereHit<Num> RaySphereQuadratic::operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const {
+  return ray_sphere_quadratic<Num>(r, c, radius, probe);
 }
 
 }  // namespace sw::ray

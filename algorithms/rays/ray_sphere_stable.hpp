@@ -24,6 +24,8 @@ struct RaySphereStable {
   X(none, "miss")
   SW_LISTING("Stable ray-sphere", SW_LINES_RAY_SPHERE_STABLE)
 #undef SW_LINES_RAY_SPHERE_STABLE
+  // The algorithm itself, callable as RaySphereStable{}(...): ray_sphere_stable below.
+  template <NumberType Num, StepProbe Probe> SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -73,6 +75,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     else probe.step(L::none, StepKind::miss);
   }
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline SphereHit<Num> RaySphereStable::operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const {
+  return ray_sphere_stable<Num>(r, c, radius, probe);
 }
 
 }  // namespace sw::ray

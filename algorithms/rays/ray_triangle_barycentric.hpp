@@ -21,6 +21,8 @@ struct RayTriangleBarycentric {
   X(hit, "hit: b <- (1 - beta - gamma, beta, gamma)")
   SW_LISTING("Implementor's-guide ray-triangle", SW_LINES_RAY_TRIANGLE_BARYCENTRIC)
 #undef SW_LINES_RAY_TRIANGLE_BARYCENTRIC
+  // The algorithm itself, callable as RayTriangleBarycentric{}(...): ray_triangle_barycentric below.
+  template <NumberType Num, StepProbe Probe> TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -63,6 +65,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   out.b = {Num(Num(1) - beta - gamma), beta, gamma};
   if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(p).label("hit");
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleBarycentric::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const {
+  return ray_triangle_barycentric<Num>(r, v, probe);
 }
 
 }  // namespace sw::ray

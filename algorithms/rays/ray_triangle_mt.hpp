@@ -22,6 +22,8 @@ struct RayTriangleMT {
   X(hit, "hit: b <- (1 - u - v, u, v)")
   SW_LISTING("Moller-Trumbore", SW_LINES_RAY_TRIANGLE_M_T)
 #undef SW_LINES_RAY_TRIANGLE_M_T
+  // The algorithm itself, callable as RayTriangleMT{}(...): ray_triangle_mt below.
+  template <NumberType Num, StepProbe Probe> TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -64,6 +66,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   out.b = {Num(Num(1) - u - v), u, v};
   if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(Vec3<Num>(r.o + t * r.d)).label("hit");
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleMT::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const {
+  return ray_triangle_mt<Num>(r, v, probe);
 }
 
 }  // namespace sw::ray

@@ -34,6 +34,8 @@ struct RayTriangleWatertight {
   X(hit, "hit: r <- 1 / det; t <- T r; b <- (U r, V r, W r)")
   SW_LISTING("Watertight ray-triangle", SW_LINES_RAY_TRIANGLE_WATERTIGHT)
 #undef SW_LINES_RAY_TRIANGLE_WATERTIGHT
+  // The algorithm itself, callable as RayTriangleWatertight{}(...): ray_triangle_watertight below.
+  template <NumberType Num, StepProbe Probe> TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -100,6 +102,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p).label("hit");
   }
   return out;
+}
+
+template <NumberType Num, StepProbe Probe>
+[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleWatertight::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const {
+  return ray_triangle_watertight<Num>(r, v, probe);
 }
 
 }  // namespace sw::ray

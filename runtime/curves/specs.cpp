@@ -74,8 +74,7 @@ template <class AlgoT> struct CubicSpec {
   }
   template <class Num, class Probe> static Output compute(const curves::Cubic<Num>& p, Probe& probe) {
     Output o;
-    if constexpr (forward) curves::poly_forward_diff<Num>(p, o.pixels, probe);
-    else curves::poly_horner<Num>(p, o.pixels, probe);
+    Algo{}(p, o.pixels, probe);
     return o;
   }
   static Json to_json(const Output& o) { return pixels_json("pixels", o); }

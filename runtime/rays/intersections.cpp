@@ -325,11 +325,11 @@ template <class AlgoT, Prim P> struct RaySpec {
   }
 };
 
-template <class AlgoT, auto Fn> struct TriangleSpec : RaySpec<AlgoT, Prim::triangle> {
+template <class AlgoT> struct TriangleSpec : RaySpec<AlgoT, Prim::triangle> {
   static inline const std::string example =
       R"({"ray":{"o":[0,0,10],"d":[0.30458447,0.30458447,-0.9024725]},"triangle":[[-5,-5,0],[5,-5,0],[5,5,0]]})";
   template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
-    const auto h = Fn(p, probe);
+    const auto h = AlgoT{}(p.ray, p.v, probe);
     if (!h.hit || !p.attr) return make_output<Num>(h.hit, h.t, true, &h.b, nullptr, nullptr);
     // Inverse mapping: the vertex attributes interpolated with the barycentric weights.
     const auto& a = *p.attr;
@@ -338,10 +338,10 @@ template <class AlgoT, auto Fn> struct TriangleSpec : RaySpec<AlgoT, Prim::trian
     return make_output<Num>(h.hit, h.t, true, &h.b, nullptr, nullptr, &attr);
   }
 };
-template <class AlgoT, auto Fn> struct SphereSpec : RaySpec<AlgoT, Prim::sphere> {
+template <class AlgoT> struct SphereSpec : RaySpec<AlgoT, Prim::sphere> {
   static inline const std::string example = R"({"ray":{"o":[0,0,0],"d":[1,0.0001,0]},"sphere":{"c":[100000000,0,0],"r":1}})";
   template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
-    const auto h = Fn(p, probe);
+    const auto h = AlgoT{}(p.ray, p.v[0], p.r, probe);
     return make_output<Num>(h.hit, h.t, h.t_exact, nullptr, nullptr, nullptr);
   }
 };
@@ -349,36 +349,30 @@ template <class AlgoT, auto Fn> struct SphereSpec : RaySpec<AlgoT, Prim::sphere>
 struct BoxSpec : RaySpec<ray::RayBox, Prim::box> {
   static inline const std::string example = R"({"ray":{"o":[0,1,0.5],"d":[1,-0.0,0]},"box":{"min":[1,0,0],"max":[2,1,1]}})";
   template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
-    const auto h = ray::ray_box<Num>(p.ray, p.v[0], p.v[1], probe);
+    const auto h = ray::RayBox{}(p.ray, p.v[0], p.v[1], probe);
     return make_output<Num>(h.hit, h.t, true, nullptr, &h.t_near, &h.t_far);
   }
 };
 struct PlaneSpec : RaySpec<ray::RayPlane, Prim::plane> {
   static inline const std::string example = R"({"ray":{"o":[0,0,1],"d":[1,0,-0.001]},"plane":{"p":[0,0,0],"n":[0,0,1]}})";
   template <class Num, class Probe> [[gnu::always_inline]] static RayOutput compute(const Prepared<Num>& p, Probe& probe) {
-    const auto h = ray::ray_plane<Num>(p.ray, p.v[0], p.v[1], probe);
+    const auto h = ray::RayPlane{}(p.ray, p.v[0], p.v[1], probe);
     return make_output<Num>(h.hit, h.t, true, nullptr, nullptr, nullptr);
   }
 };
 
-constexpr auto tri_bary = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_triangle_barycentric<Num>(p.ray, p.v, probe); };
-constexpr auto tri_mt = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_triangle_mt<Num>(p.ray, p.v, probe); };
-constexpr auto tri_wt = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_triangle_watertight<Num>(p.ray, p.v, probe); };
-constexpr auto sph_geo = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_geometric<Num>(p.ray, p.v[0], p.r, probe); };
-constexpr auto sph_quad = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_quadratic<Num>(p.ray, p.v[0], p.r, probe); };
-constexpr auto sph_stable = []<class Num, class Probe>(const Prepared<Num>& p, Probe& probe) __attribute__((always_inline)) { return ray::ray_sphere_stable<Num>(p.ray, p.v[0], p.r, probe); };
 
 }  // namespace
 
 void register_ray_intersections(std::vector<Algorithm>& out) {
   out.push_back(make_algorithm<PlaneSpec>());
-  out.push_back(make_algorithm<SphereSpec<ray::RaySphereGeometric, sph_geo>>());
-  out.push_back(make_algorithm<SphereSpec<ray::RaySphereQuadratic, sph_quad>>());
-  out.push_back(make_algorithm<SphereSpec<ray::RaySphereStable, sph_stable>>());
+  out.push_back(make_algorithm<SphereSpec<ray::RaySphereGeometric>>());
+  out.push_back(make_algorithm<SphereSpec<ray::RaySphereQuadratic>>());
+  out.push_back(make_algorithm<SphereSpec<ray::RaySphereStable>>());
   out.push_back(make_algorithm<BoxSpec>());
-  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleBarycentric, tri_bary>>());
-  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleMT, tri_mt>>());
-  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleWatertight, tri_wt>>());
+  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleBarycentric>>());
+  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleMT>>());
+  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleWatertight>>());
 }
 
 }  // namespace sw
