@@ -95,3 +95,18 @@ TEST_CASE("probe: check reads colour and list variables and refuses malformed on
     CHECK(check_with(bad).status == 2);
   }
 }
+
+TEST_CASE("probe: a tree node records its id, its parent and its bounds", "[probe]") {
+  Recorder<Rational> r;
+  r.step(1, StepKind::visit).node(5, 2, Vec2<Rational>{0, Rational(1, 2)}, Vec2<Rational>{4, 8}).node(1, -1, Vec3<Rational>{0, 0, 0}, Vec3<Rational>{1, 2, 3});
+  const GeoRecord &a = r.geo_at(0), &b = r.geo_at(1);
+  CHECK(a.kind == GeoKind::node2);
+  CHECK(geo_name(a.kind) == "node");
+  REQUIRE(a.count == 6);
+  const Rational want2[6] = {5, 2, 0, Rational(1, 2), 4, 8};
+  for (int k = 0; k < 6; ++k) CHECK(r.num_value(a.slot + k) == want2[k]);
+  CHECK(b.kind == GeoKind::node3);
+  REQUIRE(b.count == 8);
+  CHECK(r.num_value(b.slot + 1) == -1);
+  CHECK(r.num_value(b.slot + 7) == 3);
+}

@@ -35,6 +35,7 @@ void add_item(Box3& b, const Item3& it) {
     }
     case GeoKind::ray3:
     case GeoKind::plane: b.add(it.at(0)); break;
+    case GeoKind::node3: b.add(it.at(2)), b.add(it.at(5)); break;  // id, parent, then the bounds
     default:
       if (geo_desc(it.kind).dim == 3)
         for (std::size_t k = 0; k + 2 < it.v.size(); k += 3) b.add(it.at(int(k)));

@@ -221,6 +221,7 @@ void draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const
       switch (k) {
         case GeoKind::sphere: paint_sphere(p, it.at(0), it.v[3]); break;
         case GeoKind::box3: paint_box(p, it.at(0), it.at(3)); break;
+        case GeoKind::node3: paint_box(p, it.at(2), it.at(5)); break;  // a tree node's bounds
         case GeoKind::triangle3: paint_triangle(p, it); break;
         case GeoKind::plane: paint_plane(p, sc, it.at(0), it.at(3)); break;
         case GeoKind::ray3: paint_ray(p, sc, it); break;

@@ -247,6 +247,14 @@ void PixelCanvas::paint_items(ImDrawList* dl, const TraceModel& m, std::size_t s
         break;
       }
       case GeoKind::rect: dl->AddRect(at(2), at(0), col, 0, 0, thick), label_at = at(2); break;
+      case GeoKind::node2: {  // a tree node: its bounds, and its id in the corner
+        dl->AddRect(at(4), at(2), col, 0, 0, thick);
+        char id[24];
+        std::snprintf(id, sizeof id, "%lld", (long long)t.geo_double(geo, 0));
+        dl->AddText(ImVec2(at(2).x + 3, at(4).y + 2), theme::kLabel, id);
+        label_at = at(4);
+        break;
+      }
       case GeoKind::span: {  // row j from column i0 to i1, cells included
         const double j = t.geo_double(geo, 0), i0 = t.geo_double(geo, 1), i1 = t.geo_double(geo, 2);
         label_at = to_screen(i1 + 0.5, j + 0.5);

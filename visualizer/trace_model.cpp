@@ -44,6 +44,9 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
         const double x = t.geo_double(geo, 0), y = t.geo_double(geo, 1), r = t.geo_double(geo, 2);
         bounds_.add(x - r, y - r);
         bounds_.add(x + r, y + r);
+      } else if (geo.kind == GeoKind::node2) {  // id, parent, then the bounds
+        bounds_.add(t.geo_double(geo, 2), t.geo_double(geo, 3));
+        bounds_.add(t.geo_double(geo, 4), t.geo_double(geo, 5));
       } else if (geo_desc(geo.kind).dim == 2 && !geo_desc(geo.kind).integer) {  // points, segments, lists: coordinate pairs
         for (std::uint32_t k = 0; k + 1 < geo.count; k += 2) bounds_.add(t.geo_double(geo, int(k)), t.geo_double(geo, int(k) + 1));
       }

@@ -2,6 +2,7 @@
 // (SW_GEO_KINDS in step.hpp), so an algorithm writes probe.segment(a, b).label("chord").
 // Self provides geo(GeoKind, values...) and returns Self& from it.
 #pragma once
+#include <cstdint>
 #include "core/step.hpp"
 #include "core/vec.hpp"
 
@@ -22,6 +23,13 @@ template <class Self, class Num> struct GeometryEmitters {
     return self().geo(GeoKind::triangle3, a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z);
   }
   Self& plane(const Vec3<Num>& p, const Vec3<Num>& n) { return self().geo(GeoKind::plane, p.x, p.y, p.z, n.x, n.y, n.z); }
+  // A tree node (quadtree, kd-tree, BVH): its id, its parent's id (-1 for the root) and its bounds.
+  Self& node(std::int64_t id, std::int64_t parent, const Vec2<Num>& lo, const Vec2<Num>& hi) {
+    return self().geo(GeoKind::node2, Num(id), Num(parent), lo.x, lo.y, hi.x, hi.y);
+  }
+  Self& node(std::int64_t id, std::int64_t parent, const Vec3<Num>& lo, const Vec3<Num>& hi) {
+    return self().geo(GeoKind::node3, Num(id), Num(parent), lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+  }
 
  private:
   Self& self() { return static_cast<Self&>(*this); }

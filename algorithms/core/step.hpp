@@ -44,7 +44,9 @@ inline std::optional<StepKind> parse_kind(std::string_view s) {
   X(span, "span", 3, true, 2, true)             /* row j, first i, last i*/\
   X(rect, "rect", 4, false, 2, false)           /* min x y, max x y */     \
   X(circle, "circle", 3, false, 2, false)       /* cx cy r */              \
-  X(arrow, "arrow", 4, false, 2, false)         /* from x y, to x y */
+  X(arrow, "arrow", 4, false, 2, false)         /* from x y, to x y */     \
+  X(node2, "node", 6, false, 2, false)          /* id, parent, min, max */ \
+  X(node3, "node3", 8, false, 3, false)         /* id, parent, min, max */
 
 enum class GeoKind : std::uint8_t {
 #define SW_GEO_ENUM(id, name, arity, integer, dim, decision) id,
