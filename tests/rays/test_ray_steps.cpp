@@ -1,172 +1,419 @@
-// The ray family's exact step replay (every variable against a closed form) and `check` on exact
-// traces.
+// The ray family, step by step: every variable and geometry item an exact step of ray-plane,
+// ray-box and the three ray-sphere tests records, in the order the steps come, against closed
+// forms of docs/rays/semantics.md written from the input (not by running the algorithm), for the
+// catalog examples, the lessons, the corpus, the generated random and hard sets and seeded small
+// rational cases that reach every miss line. A step, variable or geometry item without an
+// expectation fails. The expected outcome is also held against the oracle. Triangles:
+// test_ray_triangle_steps.cpp; camera-ray and sphere-uv: test_ray_mapping_steps.cpp.
+//
+// Listing lines no step records, by design: ray-box `axis`, `slab` and `order` (the clip step
+// shows the ordered slab interval); ray-sphere-geometric `hit` (the root step is the hit step).
 #include <catch2/catch.hpp>
-#include <cstdlib>
-#include <fstream>
-#include <map>
-#include <random>
 #include <sstream>
-#include <sys/wait.h>
 #include "catalog.hpp"
-#include "ray_test_support.hpp"
+#include "ray_steps.hpp"
 #include "rays/cases.hpp"
 #include "rays_oracle.hpp"
 #include "trace_io.hpp"
-#include "rays/ray_box.hpp"
-#include "rays/ray_plane.hpp"
-#include "rays/ray_sphere_geometric.hpp"
-#include "rays/ray_sphere_quadratic.hpp"
-#include "rays/ray_sphere_stable.hpp"
-#include "rays/ray_triangle_barycentric.hpp"
-#include "rays/ray_triangle_mt.hpp"
-#include "rays/ray_triangle_watertight.hpp"
 
 using namespace sw;
 using namespace sw::testing::rays;
+using sw::testing::ratio;
+using K = StepKind;
 
-TEST_CASE("rays: exact step replay, every variable", "[rays]") {
-  std::vector<std::pair<std::string, Json>> inputs;
-  for (const Json& c : read_jsonl("corpus.jsonl")) inputs.push_back({c["primitive"], c["input"]});
-  for (const char* prim : {"triangle", "sphere", "box", "plane"}) {
-    for (const Json& j : rays::random_inputs(prim, 60, 99)) inputs.push_back({prim, j});
-    const auto hard = rays::hard_inputs(prim, 5);
-    for (std::size_t i = 0; i < hard.size(); i += hard.size() / 40 + 1) inputs.push_back({prim, hard[i]});
+namespace {
+
+struct Outcome {
+  bool hit = false;
+  Val t;
+  Q t_near, t_far;
+};
+
+Outcome hit_at(const Val& t) {
+  Outcome o;
+  o.hit = true, o.t = t;
+  return o;
+}
+
+VV at(const Parsed& p, const Val& t) { return lift(p.o) + t * lift(p.d); }
+ExpectedStep& scene_ray(ExpectedStep& s, const Parsed& p) { return s.item2(GeoKind::ray3, lift(p.o), lift(p.d)).keep(); }
+
+// ray-plane: den = n.d; parallel iff den = 0; else num = n.(p - o), t = num / den, a hit iff t > 0.
+Outcome plane_expected(const Parsed& p, Expected& e) {
+  using L = ray::RayPlane;
+  const V3 pp = p.v[0], n = p.v[1];
+  const Q den = dotq(n, p.d);
+  scene_ray(e.step(L::denom, K::decide).var("den", den), p).item2(GeoKind::plane, lift(pp), lift(n)).keep();
+  if (sgn(den) == 0) {
+    e.step(L::parallel, K::miss);
+    return {};
   }
-  std::size_t checked = 0;
-  for (const auto& [prim, in] : inputs) {
-    const Parsed p = parse(in, prim);
-    const V3 f = sub(p.o, p.v[0]);
-    for (const std::string& id : kAlgs.at(prim)) {
-      const Recorded rec = find_algorithm(id).record(in, Numeric::exact);
-      const auto& tr = dynamic_cast<const Recorder<Rational>&>(*rec.trace);
-      INFO(id << " " << in.dump());
-      // Integer state the expected values depend on, read as the steps go.
-      std::map<std::string, std::int64_t> ints;
-      Rational tn, tf;
-      bool bounded = false;
-      for (std::size_t s = 0; s < tr.size(); ++s) {
-        const StepRecord& st = tr.at(s);
-        for (auto vi = st.var_begin; vi < st.var_end; ++vi) {
-          const VarRecord& var = tr.var_at(vi);
-          const std::string name = var.name;
-          if (var.is_int) {
-            ints[name] = tr.int_value(var.slot);
-            continue;
-          }
-          const Rational got = tr.num_value(var.slot);
-          std::optional<Rational> want;
-          bool approx = false;  // went through a rounded square root
-          if (prim == "triangle") {
-            const V3 e1 = sub(p.v[1], p.v[0]), e2 = sub(p.v[2], p.v[0]), so = sub(p.o, p.v[0]);
-            const V3 a = sub(p.v[0], p.o), b = sub(p.v[1], p.o), c = sub(p.v[2], p.o);
-            const Rational w0 = oracle::triple(p.d, b, c), w1 = oracle::triple(p.d, c, a), w2 = oracle::triple(p.d, a, b);
-            if (id == "ray-triangle-watertight") {
-              const int kx = int(ints["kx"]), ky = int(ints["ky"]), kz = int(ints["kz"]);
-              const Rational adz = abs(p.d[kz]);
-              auto sheared = [&](const V3& v, int k) { return Rational(v[k] - p.d[k] / p.d[kz] * v[kz]); };
-              const std::map<std::string, Rational> m = {
-                  {"Sx", p.d[kx] / p.d[kz]}, {"Sy", p.d[ky] / p.d[kz]}, {"Sz", 1 / p.d[kz]},
-                  {"Ax", sheared(a, kx)}, {"Ay", sheared(a, ky)}, {"Bx", sheared(b, kx)}, {"By", sheared(b, ky)},
-                  {"Cx", sheared(c, kx)}, {"Cy", sheared(c, ky)},
-                  // The shear frame (kx, ky, kz) is an even permutation when d_kz > 0 and odd
-                  // otherwise, so the 2D edge functions are -(triple products) / |d_kz|.
-                  {"U", -w0 / adz}, {"V", -w1 / adz}, {"W", -w2 / adz}, {"det", -(w0 + w1 + w2) / adz},
-                  {"T", -oracle::triple(e1, e2, a) / adz}};
-              if (m.count(name)) want = m.at(name);
-            } else if (id == "ray-triangle-mt") {
-              const Rational det = oracle::triple(e1, p.d, e2);
-              const std::map<std::string, Rational> m = {{"det", det}};
-              if (m.count(name)) want = m.at(name);
-              if (sgn(det) != 0) {
-                if (name == "u") want = oracle::triple(so, p.d, e2) / det;
-                if (name == "v") want = oracle::triple(p.d, so, e1) / det;
-                if (name == "t") want = oracle::triple(e2, so, e1) / det;
-              }
-            } else {
-              const V3 n = crossq(e1, e2);
-              const Rational den = oracle::triple(p.d, e1, e2);
-              if (name == "nx") want = oracle::triple(kAxis[0], e1, e2);
-              if (name == "ny") want = oracle::triple(kAxis[1], e1, e2);
-              if (name == "nz") want = oracle::triple(kAxis[2], e1, e2);
-              if (name == "den") want = den;
-              if (name == "t") want = dotq(n, a) / den;
-              if (name == "beta") want = w1 / (w0 + w1 + w2);
-              if (name == "gamma") want = w2 / (w0 + w1 + w2);
-            }
-            if (name == "b0") want = w0 / (w0 + w1 + w2);
-            if (name == "b1") want = w1 / (w0 + w1 + w2);
-            if (name == "b2") want = w2 / (w0 + w1 + w2);
-            if (name == "t" && !want) want = oracle::ray_triangle(p.o, p.d, p.v).t;
-          } else if (prim == "sphere") {
-            const Rational a = dotq(p.d, p.d), r2 = p.r * p.r, fxd2 = dotq(crossq(f, p.d), crossq(f, p.d));
-            const Rational cc = dotq(f, f) - r2, hb = dotq(f, p.d);
-            const std::map<std::string, Rational> m = {
-                {"L2", dotq(f, f)}, {"a", a}, {"r2", r2}, {"tca", -hb}, {"m2", fxd2 / a}, {"h2", a * r2 - fxd2},
-                {"b", 2 * hb}, {"c", cc}, {"b'", hb}, {"lx", f.x - hb / a * p.d.x}, {"ly", f.y - hb / a * p.d.y},
-                {"lz", f.z - hb / a * p.d.z}};
-            if (m.count(name)) want = m.at(name);
-            if (name == "D") want = id == "ray-sphere-quadratic" ? Rational(4 * (a * r2 - fxd2)) : Rational(a * r2 - fxd2);
-            // Roots: they must satisfy Vieta's formulas with the other recorded root (checked below).
-            if (name == "t0" || name == "t1" || name == "n0" || name == "n1" || name == "near" || name == "far" || name == "q") approx = true;
-            if (name == "t") {
-              const auto o = oracle::ray_sphere(p.o, p.d, p.v[0], p.r);
-              REQUIRE(o.hit);
-              want = o.t;
-              approx = !o.t_exact;  // rational t: exact equality
-            }
-          } else if (prim == "box") {
-            const int k = int(ints["k"]);
-            if (sgn(p.d[k]) != 0) {
-              Rational t1 = (p.v[0][k] - p.o[k]) / p.d[k], t2 = (p.v[1][k] - p.o[k]) / p.d[k];
-              if (t1 > t2) std::swap(t1, t2);
-              if (name == "t1") want = t1;
-              if (name == "t2") {
-                want = t2;
-                tn = bounded ? std::max(tn, t1) : t1, tf = bounded ? std::min(tf, t2) : t2, bounded = true;
-              }
-            }
-            if (name == "t_near") want = tn;
-            if (name == "t_far") want = tf;
-            if (name == "t") want = oracle::ray_box(p.o, p.d, p.v[0], p.v[1]).t;
-          } else {
-            const Rational den = dotq(p.v[1], p.d);
-            if (name == "den") want = den;
-            if (name == "num") want = dotq(p.v[1], sub(p.v[0], p.o));
-            if (name == "t") want = dotq(p.v[1], sub(p.v[0], p.o)) / den;
-          }
-          if (approx && name != "t") {
-            ++checked;
-            continue;  // checked as pairs after the loop
-          }
-          INFO("variable " << name << " at step " << s);
-          REQUIRE(want.has_value());  // every recorded number has an independent expectation
-          if (approx) CHECK(num::round_bits(got, oracle::kSphereTBits) == *want);
-          else CHECK(got == *want);
-          ++checked;
-        }
+  const Q num = dotq(n, sub(pp, p.o)), t = num / den;
+  e.step(L::num, K::decide).var("num", num);
+  if (sgn(t) <= 0) {
+    e.step(L::behind, K::miss);
+    return {};
+  }
+  e.step(L::hit, K::hit).var("t", t).point(at(p, t)).label("hit");
+  return hit_at(t);
+}
+
+// ray-box: axis k with d_k = 0 holds every t iff min_k <= o_k <= max_k; else the ray is in the
+// slab for t between the two plane crossings (min_k - o_k) / d_k and (max_k - o_k) / d_k, t1 the
+// smaller. The interval [t_near, t_far] is the intersection of the slab intervals so far.
+Outcome box_expected(const Parsed& p, Expected& e) {
+  using L = ray::RayBox;
+  const V3 lo = p.v[0], hi = p.v[1];
+  scene_ray(e.step(L::init, K::init), p).item2(GeoKind::box3, lift(lo), lift(hi)).keep();
+  static const char* slab[3] = {"x slab", "y slab", "z slab"};
+  bool bounded = false;
+  Q tn, tf;
+  for (int k = 0; k < 3; ++k) {
+    if (sgn(p.d[k]) == 0) {
+      const bool out = p.o[k] < lo[k] || p.o[k] > hi[k];
+      e.step(L::flat, K::decide).flag("k", k).flag("out", out);
+      if (out) {
+        e.step(L::outside, K::miss);
+        return {};
       }
-      // Sphere roots recorded as pairs: Vieta (t0 t1 = c/a, t0 + t1 = -b/a) on the exact inputs, and
-      // the quadratic's numerators n = 2a t.
-      if (prim == "sphere") {
-        std::map<std::string, Rational> v;
-        for (std::size_t s = 0; s < tr.size(); ++s)
-          for (auto vi = tr.at(s).var_begin; vi < tr.at(s).var_end; ++vi)
-            if (!tr.var_at(vi).is_int) v[tr.var_at(vi).name] = tr.num_value(tr.var_at(vi).slot);
-        const Rational a = dotq(p.d, p.d), cc = dotq(f, f) - p.r * p.r, hb = dotq(f, p.d);
-        for (auto [x, y] : {std::pair{"t0", "t1"}, std::pair{"near", "far"}})
-          if (v.count(x)) {
-            CHECK(close(v[x] * v[y], cc / a));
-            CHECK(close(v[x] + v[y], -2 * hb / a));
-          }
-        if (v.count("n0")) {  // n0 n1 = b^2 - D = 4 a cc, n0 + n1 = -2b
-          CHECK(close(v["n0"] * v["n1"], 4 * a * cc));
-          CHECK(close(v["n0"] + v["n1"], -4 * hb));
+      continue;
+    }
+    const Q ta = (lo[k] - p.o[k]) / p.d[k], tb = (hi[k] - p.o[k]) / p.d[k];
+    const Q t1 = std::min(ta, tb), t2 = std::max(ta, tb);
+    tn = bounded ? std::max(tn, t1) : t1, tf = bounded ? std::min(tf, t2) : t2, bounded = true;
+    e.step(L::clip, K::advance).flag("k", k).var("t1", t1).var("t2", t2).var("t_near", tn).var("t_far", tf)
+        .segment(at(p, t1), at(p, t2)).label(slab[k]).keep()
+        .segment(at(p, tn), at(p, tf)).label("[t_near, t_far]").valued(Q(tf - tn)).replace();
+  }
+  if (tn > tf) {
+    e.step(L::empty, K::miss);
+    return {};
+  }
+  if (sgn(tf) <= 0) {
+    e.step(L::exit, K::miss);
+    return {};
+  }
+  const Q t = sgn(tn) > 0 ? tn : tf;
+  e.step(L::hit, K::hit).var("t", t).point(at(p, t)).label("hit");
+  Outcome o = hit_at(t);
+  o.t_near = tn, o.t_far = tf;
+  return o;
+}
+
+// The sphere's closed forms. With f = o - c, a = d.d, b' = f.d, cc = f.f - r^2: the roots of
+// |o + t d - c|^2 = r^2 are t-/+ = (-b' -/+ sqrt(D)) / a with D = b'^2 - a cc = a r^2 - |f x d|^2
+// (Lagrange's identity: stated by the cross product, independently of the algorithms' forms);
+// the line's closest point to c is the foot o - (b'/a) d, at squared distance |f x d|^2 / a.
+struct SphereForms {
+  Q a, bh, cc, r2, x2, dq;
+  VV c, foot;
+  Val tm, tp;
+  int sm = 0, sp = 0;  // the exact signs of t- and t+
+};
+SphereForms sphere_forms(const Parsed& p) {
+  SphereForms s;
+  const V3 f = sub(p.o, p.v[0]), fxd = crossq(f, p.d);
+  s.a = dotq(p.d, p.d), s.bh = dotq(f, p.d), s.r2 = p.r * p.r, s.cc = dotq(f, f) - s.r2, s.x2 = dotq(fxd, fxd);
+  s.dq = s.a * s.r2 - s.x2;
+  s.c = lift(p.v[0]);
+  s.foot = lift(p.o) + Val(Q(-s.bh / s.a)) * lift(p.d);
+  if (sgn(s.dq) >= 0) {
+    const Val root = sqrt_val(s.dq);
+    s.tm = (Val(Q(-s.bh)) - root) / Val(s.a), s.tp = (Val(Q(-s.bh)) + root) / Val(s.a);
+    s.sm = sign_add_root(Q(-s.bh), -1, s.dq), s.sp = sign_add_root(Q(-s.bh), 1, s.dq);
+  }
+  return s;
+}
+ExpectedStep& scene_sphere(ExpectedStep& st, const Parsed& p) {
+  return scene_ray(st, p).item(GeoKind::sphere, {p.v[0].x, p.v[0].y, p.v[0].z, p.r}).keep();
+}
+
+// ray-sphere-geometric: behind iff the origin is not inside and tca = (c - o).d <= 0; rejected iff
+// the line is farther than r from c; else the hit is the smallest positive root.
+Outcome geometric_expected(const Parsed& p, Expected& e) {
+  using L = ray::RaySphereGeometric;
+  const SphereForms s = sphere_forms(p);
+  const Q l2 = Q(s.cc + s.r2), tca = -s.bh;
+  scene_sphere(e.step(L::oc, K::init).var("L2", l2).var("a", s.a).var("r2", s.r2), p);
+  const bool inside = l2 < s.r2;
+  e.step(L::inside, K::decide).flag("inside", inside).flag("on", l2 == s.r2);
+  e.step(L::tca, K::decide).var("tca", tca).point(s.foot).label("closest").keep();
+  if (!inside && sgn(tca) <= 0) {
+    e.step(L::behind, K::miss);
+    return {};
+  }
+  const Q m2 = s.x2 / s.a;
+  e.step(L::dist, K::decide).var("m2", m2).segment(s.c, s.foot).label("r^2 - m2").valued(Q(s.r2 - m2)).keep();
+  if (m2 > s.r2) {
+    e.step(L::reject, K::miss);
+    return {};
+  }
+  e.step(L::chord, K::decide).var("h2", s.dq);
+  CHECK(s.sp > 0);  // a hit: the far root is positive
+  const Val t = s.sm > 0 ? s.tm : s.tp;
+  e.step(L::root, K::hit).var("t", t).point(at(p, t)).label("hit");
+  return hit_at(t);
+}
+
+// ray-sphere-quadratic: b = 2b', D = b^2 - 4 a cc = 4 (a r^2 - |f x d|^2), the closest approach is
+// the foot, n = 2a t for both roots; the hit is the smaller root if positive, else the larger if
+// positive.
+Outcome quadratic_expected(const Parsed& p, Expected& e) {
+  using L = ray::RaySphereQuadratic;
+  const SphereForms s = sphere_forms(p);
+  scene_sphere(e.step(L::coeffs, K::init).var("a", s.a).var("b", Q(2 * s.bh)).var("c", s.cc), p);
+  // The closest approach t_c = -b / 2a, and the centre's segment to it valued by D.
+  e.step(L::disc, K::decide).var("D", Q(4 * s.dq)).point(s.foot).label("t_c").keep().segment(s.c, s.foot).label("D").valued(Q(4 * s.dq)).keep();
+  if (sgn(s.dq) < 0) {
+    e.step(L::miss, K::miss);
+    return {};
+  }
+  const Val two_a(Q(2 * s.a));
+  e.step(L::roots, K::decide).var("n0", two_a * s.tm).var("n1", two_a * s.tp).var("t0", s.tm).var("t1", s.tp)
+      .point(at(p, s.tm)).label("t0").keep().point(at(p, s.tp)).label("t1").keep();
+  if (s.sm > 0) {
+    e.step(L::near, K::hit).point(at(p, s.tm)).label("hit");
+    return hit_at(s.tm);
+  }
+  if (s.sp > 0) {
+    e.step(L::far, K::hit).point(at(p, s.tp)).label("hit");
+    return hit_at(s.tp);
+  }
+  e.step(L::none, K::miss);
+  return {};
+}
+
+// ray-sphere-stable: l = foot - c; D = a (r^2 - l.l); q = -(b' + sign(b') sqrt(D)) with
+// sign(0) = +1, zero only for b' = D = 0; near and far are the smaller and the larger root.
+Outcome stable_expected(const Parsed& p, Expected& e) {
+  using L = ray::RaySphereStable;
+  const SphereForms s = sphere_forms(p);
+  scene_sphere(e.step(L::coeffs, K::init).var("a", s.a).var("b'", s.bh).var("c", s.cc), p);
+  const VV l = s.foot - s.c;
+  e.step(L::foot, K::advance).vec("lx", "ly", "lz", l).point(s.foot).label("foot").keep()
+      .segment(s.c, s.foot).label("r^2 - |l|^2").valued(Q(s.r2 - s.x2 / s.a)).keep();
+  e.step(L::disc, K::decide).var("D", s.dq);
+  if (sgn(s.dq) < 0) {
+    e.step(L::miss, K::miss);
+    return {};
+  }
+  const Val root = sqrt_val(s.dq);
+  e.step(L::q, K::decide).var("q", -(Val(s.bh) + Val(sgn(s.bh) < 0 ? -1 : 1) * root));
+  if (sgn(s.bh) == 0 && sgn(s.dq) == 0) {
+    e.step(L::degenerate, K::miss);
+    return {};
+  }
+  e.step(L::order, K::decide).var("near", s.tm).var("far", s.tp).point(at(p, s.tm)).label("near").keep().point(at(p, s.tp)).label("far").keep();
+  if (s.sm > 0) {
+    e.step(L::near, K::hit).point(at(p, s.tm)).label("hit");
+    return hit_at(s.tm);
+  }
+  if (s.sp > 0) {
+    e.step(L::far, K::hit).point(at(p, s.tp)).label("hit");
+    return hit_at(s.tp);
+  }
+  e.step(L::none, K::miss);
+  return {};
+}
+
+// Seeded small-rational inputs: parallel rays, origins on the primitive, zero direction
+// components, flat boxes, tangents and origins on the sphere come up often.
+std::vector<Case> small_cases(const std::string& prim, int count, std::uint64_t seed) {
+  SmallRng g(seed);
+  std::vector<Case> out;
+  for (int k = 0; k < count; ++k) {
+    Json in;
+    if (prim == "plane") {
+      in = {{"ray", {{"o", g.vec(-2, 2)}, {"d", g.nonzero_vec(-2, 2, false)}}}, {"plane", {{"p", g.vec(-2, 2)}, {"n", g.nonzero_vec(-1, 1, false)}}}};
+    } else if (prim == "box") {
+      Json lo = g.vec(-2, 1), hi = Json::array();
+      for (int a = 0; a < 3; ++a) hi.push_back(Q(q(lo[a]) + g.pick(0, 2)).get_str());  // 0: a flat box
+      Json d = Json::array();
+      for (int a = 0; a < 3; ++a) d.push_back(g.one_in(3) ? Json("0") : g.num(-2, 2));
+      if (d == Json::array({"0", "0", "0"})) d[0] = "1";
+      in = {{"ray", {{"o", g.vec(-3, 3)}, {"d", d}}}, {"box", {{"min", lo}, {"max", hi}}}};
+    } else {
+      const Json c = g.vec(-2, 2);
+      const Q r = std::array{Q(1), Q(2), Q(3), ratio(1, 2), ratio(5, 2)}[g.pick(0, 4)];
+      Json o = g.vec(-4, 4);
+      if (g.one_in(4)) {  // on the sphere: c + r u for a rational unit vector u
+        static const Q units[][3] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {ratio(3, 5), ratio(4, 5), 0}, {ratio(2, 3), ratio(-2, 3), ratio(1, 3)}};
+        const auto& u = units[g.pick(0, 4)];
+        for (int a = 0; a < 3; ++a) o[a] = Q(q(c[a]) + r * u[a]).get_str();
+      }
+      in = {{"ray", {{"o", o}, {"d", g.nonzero_vec(-2, 2, false)}}}, {"sphere", {{"c", c}, {"r", r.get_str()}}}};
+    }
+    out.push_back({"small " + std::to_string(k), in});
+  }
+  return out;
+}
+
+std::vector<Case> all_cases(std::string_view id, const std::string& prim, std::uint64_t seed) {
+  std::vector<Case> out = example_and_lessons(id);
+  for (Case& c : corpus_cases(prim)) out.push_back(std::move(c));
+  int n = 0;
+  for (const Json& j : sw::rays::random_inputs(prim.c_str(), 60, seed)) out.push_back({"random " + std::to_string(n++), j});
+  const auto hard = sw::rays::hard_inputs(prim.c_str(), 5);
+  for (std::size_t i = 0; i < hard.size(); i += hard.size() / 40 + 1) out.push_back({"hard " + std::to_string(i), hard[i]});
+  for (Case& c : small_cases(prim, 300, seed + 1)) out.push_back(std::move(c));
+  return out;
+}
+
+// The expected outcome against the oracle, and what the algorithm returned against it.
+void check_outcome(const std::string& prim, const Parsed& p, const Outcome& want, const Returned& got) {
+  oracle::RayResult o = prim == "plane"    ? oracle::ray_plane(p.o, p.d, p.v[0], p.v[1])
+                        : prim == "box"    ? oracle::ray_box(p.o, p.d, p.v[0], p.v[1])
+                                           : oracle::ray_sphere(p.o, p.d, p.v[0], p.r);
+  REQUIRE(o.hit == want.hit);
+  CHECK(got.hit == want.hit);
+  if (!want.hit) return;
+  CHECK(matches(got.t, want.t));
+  CHECK(got.t_exact == !want.t.approx);
+  CHECK(o.t_exact == !want.t.approx);
+  if (o.t_exact) CHECK(o.t == want.t.v);
+  else CHECK(abs(Q(o.t - want.t.v)) <= abs(o.t) / Q(mpz_class(1) << 126));  // the oracle's t: 128 bits
+  if (prim == "box") {
+    CHECK(o.t_near == want.t_near);
+    CHECK(o.t_far == want.t_far);
+    CHECK(got.t_near == want.t_near);
+    CHECK(got.t_far == want.t_far);
+  }
+}
+
+using ExpectFn = Outcome (*)(const Parsed&, Expected&);
+
+// Replays `id` on every case; returns the lines seen and calls `tally` with each case's outcome.
+template <class Tally> std::set<std::string_view> replay(std::string_view id, const std::string& prim, ExpectFn expect, std::uint64_t seed, Tally tally) {
+  const auto cases = all_cases(id, prim, seed);
+  CHECK(cases.size() >= 380);
+  std::set<std::string_view> seen;
+  for (const Case& c : cases) {
+    INFO(id << ", " << c.name << ": " << c.input.dump());
+    const Parsed p = parse(c.input, prim);
+    Recorder<Q> t;
+    const Returned got = record_direct(id, c.input, t);
+    Expected want;
+    const Outcome out = expect(p, want);
+    require_matches(t, find_algorithm(id).listing, want, seen);
+    check_outcome(prim, p, out, got);
+    tally(p, out, want);
+  }
+  return seen;
+}
+
+std::uint32_t last_line(const Expected& e) { return e.steps.back().line; }
+
+}  // namespace
+
+TEST_CASE("rays: exact step replay, ray-plane: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+  using L = ray::RayPlane;
+  const auto seen = replay("ray-plane", "plane", plane_expected, 301, [](const Parsed&, const Outcome&, const Expected&) {});
+  CHECK(seen == recorded_lines(L::listing(), {}));
+}
+
+TEST_CASE("rays: exact step replay, ray-box: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+  using L = ray::RayBox;
+  int flat_inside = 0, origin_inside = 0, corner_touch = 0;
+  const auto seen = replay("ray-box", "box", box_expected, 302, [&](const Parsed& p, const Outcome& o, const Expected& e) {
+    for (const ExpectedStep& s : e.steps) flat_inside += s.line == L::flat && s.vars[1].second.v == 0;
+    origin_inside += o.hit && sgn(o.t_near) <= 0;
+    corner_touch += o.hit && o.t_near == o.t_far;
+    (void)p;
+  });
+  CHECK(seen == recorded_lines(L::listing(), {"axis", "slab", "order"}));
+  CHECK(flat_inside > 0);  // a zero direction component inside its slab
+  CHECK(origin_inside > 0);
+  CHECK(corner_touch > 0);
+}
+
+namespace {
+// The sphere cases reach rational and irrational roots, tangents (D = 0) that hit, and origins
+// on the sphere.
+struct SphereTally {
+  int exact_hit = 0, irrational_hit = 0, tangent_hit = 0, on_sphere = 0;
+  void operator()(const Parsed& p, const Outcome& o, const Expected&) {
+    const SphereForms s = sphere_forms(p);
+    exact_hit += o.hit && !o.t.approx;
+    irrational_hit += o.hit && o.t.approx;
+    tangent_hit += o.hit && sgn(s.dq) == 0;
+    on_sphere += sgn(s.cc) == 0;
+  }
+  void require_reached() const {
+    CHECK(exact_hit > 0);
+    CHECK(irrational_hit > 0);
+    CHECK(tangent_hit > 0);
+    CHECK(on_sphere > 0);
+  }
+};
+}  // namespace
+
+TEST_CASE("rays: exact step replay, ray-sphere-geometric: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+  SphereTally tally;
+  const auto seen = replay("ray-sphere-geometric", "sphere", geometric_expected, 303, std::ref(tally));
+  CHECK(seen == recorded_lines(ray::RaySphereGeometric::listing(), {"hit"}));
+  tally.require_reached();
+}
+
+TEST_CASE("rays: exact step replay, ray-sphere-quadratic: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+  SphereTally tally;
+  const auto seen = replay("ray-sphere-quadratic", "sphere", quadratic_expected, 304, std::ref(tally));
+  CHECK(seen == recorded_lines(ray::RaySphereQuadratic::listing(), {}));
+  tally.require_reached();
+}
+
+TEST_CASE("rays: exact step replay, ray-sphere-stable: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+  SphereTally tally;
+  int degenerate = 0;
+  const auto seen = replay("ray-sphere-stable", "sphere", stable_expected, 305, [&](const Parsed& p, const Outcome& o, const Expected& e) {
+    tally(p, o, e);
+    degenerate += last_line(e) == ray::RaySphereStable::degenerate;
+  });
+  CHECK(seen == recorded_lines(ray::RaySphereStable::listing(), {}));
+  tally.require_reached();
+  CHECK(degenerate > 0);
+}
+
+// The tests above call the headers directly (so that a changed copy of them is what they test);
+// the catalog's recording must be that same trace, step for step.
+TEST_CASE("rays: exact step replay, the catalog records what the headers record", "[rays][steps]") {
+  int compared = 0;
+  for (const Algorithm& alg : catalog()) {
+    if (alg.family != "rays") continue;
+    const bool reference = alg.id == "camera-ray" || alg.id == "sphere-uv";
+    std::vector<Case> cases = example_and_lessons(alg.id);
+    for (Case& c : corpus_cases("")) cases.push_back(std::move(c));
+    for (const Case& c : cases) {
+      try {
+        alg.validate(c.input, reference ? Numeric::reference : Numeric::exact);
+      } catch (const InputError&) {
+        continue;  // another primitive's case
+      }
+      INFO(alg.id << ", " << c.name);
+      const Recorded rec = alg.record(c.input, reference ? Numeric::reference : Numeric::exact);
+      const auto& a = dynamic_cast<const Recorder<Q>&>(*rec.trace);
+      Recorder<Q> b;
+      record_direct(alg.id, c.input, b);
+      ++compared;
+      REQUIRE(a.size() == b.size());
+      for (std::size_t s = 0; s < a.size(); ++s) {
+        INFO("step " << s);
+        CHECK(a.at(s).line == b.at(s).line);
+        CHECK(a.at(s).kind == b.at(s).kind);
+        const auto va = sw::testing::values_of(a, s), vb = sw::testing::values_of(b, s);
+        CHECK(va.v == vb.v);
+        const auto ga = sw::testing::geometry_of(a, s), gb = sw::testing::geometry_of(b, s);
+        REQUIRE(ga.items.size() == gb.items.size());
+        for (std::size_t k = 0; k < ga.items.size(); ++k) {
+          CHECK(ga.items[k].kind == gb.items[k].kind);
+          CHECK(ga.items[k].values == gb.items[k].values);
+          CHECK(ga.items[k].label == gb.items[k].label);
+          CHECK(ga.items[k].life == gb.items[k].life);
+          CHECK(ga.items[k].value == gb.items[k].value);
         }
-        if (v.count("q")) CHECK(close((v["q"] + hb) * (v["q"] + hb), Rational(a * p.r * p.r - dotq(crossq(f, p.d), crossq(f, p.d)))));
       }
     }
   }
-  CHECK(checked > 2000);
+  CHECK(compared >= 60);  // every intersection test on its primitive's corpus, the mappings on their examples
 }
 
 TEST_CASE("rays: stepwise check accepts exact traces and rejects a tampered one", "[rays]") {
