@@ -5,7 +5,7 @@
 # touches the algorithms or `check`, and add a mutant whenever a real bug slips through.
 #
 # Usage: bash scripts/mutate.sh [--only N[,N...]] [--list] [--check] [--full | --quick] [--jobs J]
-#   --only    run only these mutants (1-based numbers or ids, comma-separated)
+#   --only    run only these mutants (1-based numbers, ranges N-M or ids, comma-separated)
 #   --list    print the mutants and exit
 #   --check   only check that every mutant's original text occurs once, and exit
 # Each mutant first runs the tests its "tests:" regex names and, only when they all pass, the rest
@@ -80,7 +80,7 @@ parse_list() {
 
 # Exactly one occurrence of old in the file (prints the count otherwise).
 occurrences() {  # file old-file
-  perl -e 'local $/; open(my $f, "<", $ARGV[0]) or do { print "missing file"; exit 1 };
+  perl -e 'local $/; open(my $f, "<", $ARGV[0]) or do { print "0 (no such file)"; exit 1 };
            my $t = <$f>; open(my $o, "<", $ARGV[1]) or die; my $s = <$o>;
            my $n = () = $t =~ /\Q$s\E/g; print $n; exit($n == 1 ? 0 : 1)' "$1" "$2"
 }
@@ -107,7 +107,15 @@ fi
 SELECTED=()
 if [[ -n $ONLY ]]; then
   IFS=, read -ra wanted <<<"$ONLY"
-  for w in "${wanted[@]}"; do
+  expanded=()
+  for w in "${wanted[@]}"; do  # N-M: a range of numbers
+    if [[ $w =~ ^([0-9]+)-([0-9]+)$ ]]; then
+      for ((n = BASH_REMATCH[1]; n <= BASH_REMATCH[2]; n++)); do expanded+=("$n"); done
+    else
+      expanded+=("$w")
+    fi
+  done
+  for w in "${expanded[@]}"; do
     found=0
     for ((n = 1; n <= COUNT; n++)); do
       if [[ $w == "$n" || $w == "$(field $n id)" ]]; then SELECTED+=("$n"); found=1; fi
@@ -122,7 +130,7 @@ fi
 stale=0
 for n in "${SELECTED[@]}"; do
   if ! c=$(occurrences "$ROOT/$(field $n file)" "$WORK/mutants/$n/old"); then
-    echo "mutate: mutant $n ($(field $n id)): the original text occurs ${c} times in $(field $n file), expected once; refresh tests/mutants.txt" >&2
+    echo "mutate: mutant $n ($(field $n id)): its original text occurs $c times in $(field $n file), not once; refresh tests/mutants.txt" >&2
     stale=1
   fi
 done
@@ -135,7 +143,8 @@ echo "mutate: copying the tree to $SRC"
 rm -rf "$WORK/stage"
 mkdir -p "$WORK/stage" "$SRC"
 if git -C "$ROOT" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-  git -C "$ROOT" ls-files -z --cached --others --exclude-standard | while IFS= read -r -d '' f; do [[ -f $ROOT/$f ]] && printf '%s\0' "$f"; done >"$WORK/files"
+  git -C "$ROOT" ls-files -z --cached --others --exclude-standard |
+    while IFS= read -r -d '' f; do if [[ -f $ROOT/$f ]]; then printf '%s\0' "$f"; fi; done >"$WORK/files"
 else
   (cd "$ROOT" && find . -type f ! -path './.git/*' ! -path './build*' ! -path './out/*' -printf '%P\0') >"$WORK/files"
 fi
@@ -209,6 +218,8 @@ for n in "${SELECTED[@]}"; do
   apply_mutant "$SRC/$file" "$WORK/mutants/$n/old" "$WORK/mutants/$n/new"
   total=$((total + 1))
   if ! build; then
+    # A build stopped by a signal or the timeout says nothing about the mutant: stop there.
+    grep -q "error:" "$WORK/build.log" || { echo "mutate: the build of mutant $n stopped without a compile error; see $WORK/build.log" >&2; exit 3; }
     status=caught detail="(compile)"
   else
     # The mutant's own tests first; only if they pass, the rest of the suite. Either way the

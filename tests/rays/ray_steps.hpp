@@ -177,7 +177,8 @@ struct Expected {
 // Replays a recording against the expectation: the same lines, kinds and order; every recorded
 // variable and geometry item (kind, values, label, lifetime, value) equal to its closed form, and
 // none without one.
-inline void require_matches(const Recorder<Q>& t, const Listing& listing, const Expected& want, std::set<std::string_view>& seen) {
+inline void require_matches(const Recorder<Q>& t, const Listing& listing, const Expected& want,
+                            std::set<std::string_view>& seen) {
   for (std::size_t s = 0; s < t.size(); ++s) {
     const std::string_view line = listing.lines[t.at(s).line - 1].name;
     seen.insert(line);
@@ -252,7 +253,8 @@ inline std::vector<Case> corpus_cases(const std::string& key) {
   std::vector<Case> out;
   for (const char* file : {"corpus.jsonl", "coverage.jsonl"})
     for (const Json& c : read_jsonl(file))
-      if (key.empty() || c["input"].contains(key)) out.push_back({std::string(file) + ": " + c["name"].get<std::string>(), c["input"]});
+      if (key.empty() || c["input"].contains(key))
+        out.push_back({std::string(file) + ": " + c["name"].get<std::string>(), c["input"]});
   return out;
 }
 
@@ -266,7 +268,9 @@ struct SmallRng {
     const int den = fractions ? std::array{1, 1, 2, 3}[pick(0, 3)] : 1;
     return Q(Q(pick(lo * den, hi * den)) / den).get_str();
   }
-  Json vec(int lo, int hi, bool fractions = true) { return Json::array({num(lo, hi, fractions), num(lo, hi, fractions), num(lo, hi, fractions)}); }
+  Json vec(int lo, int hi, bool fractions = true) {
+    return Json::array({num(lo, hi, fractions), num(lo, hi, fractions), num(lo, hi, fractions)});
+  }
   Json nonzero_vec(int lo, int hi, bool fractions = true) {
     for (;;) {
       Json v = vec(lo, hi, fractions);
@@ -297,7 +301,9 @@ inline CameraCase camera_of(const Json& in) {
   c.cam.width = in["size"][0].get<std::int64_t>(), c.cam.height = in["size"][1].get<std::int64_t>();
   c.i = in["pixel"][0].get<std::int64_t>(), c.j = in["pixel"][1].get<std::int64_t>();
   const std::string proj = in["projection"];
-  c.cam.projection = proj == "fisheye" ? ray::Projection::fisheye : proj == "cylindrical" ? ray::Projection::cylindrical : ray::Projection::perspective;
+  c.cam.projection = proj == "fisheye"       ? ray::Projection::fisheye
+                     : proj == "cylindrical" ? ray::Projection::cylindrical
+                                             : ray::Projection::perspective;
   return c;
 }
 

@@ -42,8 +42,22 @@ bool camera_expected(const Json& in, Expected& e) {
   const VV n = lift(vpn) / len_n, u = rounded_if(lift(side) / len_u, len_n.approx);
   const VV v = rounded_if(lift(crossq(vpn, side)) / (len_n * len_u), len_n.approx);
   const VV e0 = lift(eye);
-  e.step(L::frame, K::init).vec("ux", "uy", "uz", u).vec("vx", "vy", "vz", v).vec("nx", "ny", "nz", n).point(e0).label("eye").keep()
-      .segment(e0, e0 + u).label("u").keep().segment(e0, e0 + v).label("v").keep().segment(e0, e0 + n).label("n").keep();
+  e.step(L::frame, K::init)
+      .vec("ux", "uy", "uz", u)
+      .vec("vx", "vy", "vz", v)
+      .vec("nx", "ny", "nz", n)
+      .point(e0)
+      .label("eye")
+      .keep()
+      .segment(e0, e0 + u)
+      .label("u")
+      .keep()
+      .segment(e0, e0 + v)
+      .label("v")
+      .keep()
+      .segment(e0, e0 + n)
+      .label("n")
+      .keep();
   const Q sx = 2 * (Q(i) + ratio(1, 2)) / w - 1, sy = 1 - 2 * (Q(j) + ratio(1, 2)) / h;
   e.step(L::screen, K::init).flag("i", i).flag("j", j).var("sx", sx).var("sy", sy);
   const Val half_fov = fov / Val(2);
@@ -80,8 +94,16 @@ void uv_expected(const Json& in, Expected& e) {
   const V3 c = parse_point3(in["sphere"], "c"), p = parse_point3(in, "point"), qv = sub(p, c);
   const Val len = sqrt_val(dotq(qv, qv));
   const VV nrm = lift(qv) / len, pp = lift(p);
-  e.step(L::normal, K::init).vec("Nx", "Ny", "Nz", nrm).item(GeoKind::sphere, {c.x, c.y, c.z, len}).keep().point(pp).label("P").keep()
-      .segment(pp, pp + nrm).label("N").keep();
+  e.step(L::normal, K::init)
+      .vec("Nx", "Ny", "Nz", nrm)
+      .item(GeoKind::sphere, {c.x, c.y, c.z, len})
+      .keep()
+      .point(pp)
+      .label("P")
+      .keep()
+      .segment(pp, pp + nrm)
+      .label("N")
+      .keep();
   const Val lon = atan2_val(Val(qv.y), Val(qv.x)), lat = atan2_val(Val(qv.z), sqrt_val(Q(qv.x * qv.x + qv.y * qv.y)));
   e.step(L::lon, K::advance).var("lon", lon);
   e.step(L::lat, K::advance).var("lat", lat);
@@ -118,8 +140,16 @@ std::vector<Case> camera_cases(int count, std::uint64_t seed) {
     const int proj = g.pick(0, 2), w = g.pick(1, 9), h = g.pick(1, 9);
     const Json fov = g.one_in(6) ? Json("45/2") : Json(proj == 1 ? g.pick(1, 360) : g.pick(1, 179));
     auto js = [](const V3& x) { return Json::array({x.x.get_str(), x.y.get_str(), x.z.get_str()}); };
-    const Json cam = {{"eye", g.vec(-3, 3)}, {"vpn", js(vpn)}, {"vup", js(vup)}, {"d", std::array{"1", "2", "1/2", "3/2"}[g.pick(0, 3)]}, {"fov", fov}};
-    out.push_back({"small " + std::to_string(k), {{"camera", cam}, {"pixel", {g.pick(0, w - 1), g.pick(0, h - 1)}}, {"size", {w, h}}, {"projection", projections[proj]}}});
+    const Json cam = {{"eye", g.vec(-3, 3)},
+                      {"vpn", js(vpn)},
+                      {"vup", js(vup)},
+                      {"d", std::array{"1", "2", "1/2", "3/2"}[g.pick(0, 3)]},
+                      {"fov", fov}};
+    out.push_back({"small " + std::to_string(k),
+                   {{"camera", cam},
+                    {"pixel", {g.pick(0, w - 1), g.pick(0, h - 1)}},
+                    {"size", {w, h}},
+                    {"projection", projections[proj]}}});
   }
   return out;
 }
@@ -169,7 +199,8 @@ TEST_CASE("rays: camera-ray, every reference step value and geometry item matche
   CHECK(centre > 0);
 }
 
-TEST_CASE("rays: sphere inverse mapping, every reference step value and geometry item matches its closed form", "[rays][steps][replay]") {
+TEST_CASE("rays: sphere inverse mapping, every reference step value and geometry item matches its closed form",
+          "[rays][steps][replay]") {
   std::vector<Case> cases = example_and_lessons("sphere-uv");
   for (Case& c : corpus_cases("point")) cases.push_back(std::move(c));
   for (Case& c : uv_cases(300, 502)) cases.push_back(std::move(c));

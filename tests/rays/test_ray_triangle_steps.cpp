@@ -76,9 +76,18 @@ Outcome barycentric_expected(const Parsed& p, Expected& e) {
   const Q ax = abs(f.n.x), ay = abs(f.n.y), az = abs(f.n.z);
   e.step(L::drop, K::decide).flag("k", ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2);
   const std::array<Q, 3> b = {f.w[0] / f.dn, f.w[1] / f.dn, f.w[2] / f.dn};
-  e.step(L::solve, K::decide).var("beta", b[1]).var("gamma", b[2])
-      .segment(f.v[2], f.v[0]).label("beta").valued(b[1]).segment(f.v[0], f.v[1]).label("gamma").valued(b[2])
-      .segment(f.v[1], f.v[2]).label("1 - beta - gamma").valued(b[0]);
+  e.step(L::solve, K::decide)
+      .var("beta", b[1])
+      .var("gamma", b[2])
+      .segment(f.v[2], f.v[0])
+      .label("beta")
+      .valued(b[1])
+      .segment(f.v[0], f.v[1])
+      .label("gamma")
+      .valued(b[2])
+      .segment(f.v[1], f.v[2])
+      .label("1 - beta - gamma")
+      .valued(b[0]);
   if (sgn(b[0]) < 0 || sgn(b[1]) < 0 || sgn(b[2]) < 0) {
     e.step(L::inside, K::miss);
     return {};
@@ -104,7 +113,14 @@ Outcome mt_expected(const Parsed& p, Expected& e) {
     e.step(L::u, K::miss);
     return {};
   }
-  e.step(L::v, K::decide).var("v", b[2]).segment(f.v[0], f.v[1]).label("v").valued(b[2]).segment(f.v[1], f.v[2]).label("1 - u - v").valued(b[0]);
+  e.step(L::v, K::decide)
+      .var("v", b[2])
+      .segment(f.v[0], f.v[1])
+      .label("v")
+      .valued(b[2])
+      .segment(f.v[1], f.v[2])
+      .label("1 - u - v")
+      .valued(b[0]);
   if (sgn(b[2]) < 0 || sgn(b[0]) < 0) {
     e.step(L::v, K::miss);
     return {};
@@ -135,14 +151,33 @@ Outcome watertight_expected(const Parsed& p, Expected& e) {
   e.step(L::shear, K::init).var("Sx", Q(p.d[kx] / dz)).var("Sy", Q(p.d[ky] / dz)).var("Sz", Q(1 / dz));
   const VV o = lift(p.o);
   e.step(L::translate, K::init).segment(o, f.v[0]).label("A").segment(o, f.v[1]).label("B").segment(o, f.v[2]).label("C");
-  auto sheared = [&](int i, int k) { const V3 r = sub(p.v[i], p.o); return Q(r[k] - p.d[k] / dz * r[kz]); };
-  e.step(L::project, K::init).var("Ax", sheared(0, kx)).var("Ay", sheared(0, ky)).var("Bx", sheared(1, kx)).var("By", sheared(1, ky))
-      .var("Cx", sheared(2, kx)).var("Cy", sheared(2, ky));
+  auto sheared = [&](int i, int k) {
+    const V3 r = sub(p.v[i], p.o);
+    return Q(r[k] - p.d[k] / dz * r[kz]);
+  };
+  e.step(L::project, K::init)
+      .var("Ax", sheared(0, kx))
+      .var("Ay", sheared(0, ky))
+      .var("Bx", sheared(1, kx))
+      .var("By", sheared(1, ky))
+      .var("Cx", sheared(2, kx))
+      .var("Cy", sheared(2, ky));
   const std::array<Q, 3> uvw = {-f.w[0] / m, -f.w[1] / m, -f.w[2] / m};
-  e.step(L::edges, K::decide).var("U", uvw[0]).var("V", uvw[1]).var("W", uvw[2])
-      .segment(f.v[1], f.v[2]).label("U").valued(uvw[0]).segment(f.v[2], f.v[0]).label("V").valued(uvw[1])
-      .segment(f.v[0], f.v[1]).label("W").valued(uvw[2]);
-  const bool neg = sgn(uvw[0]) < 0 || sgn(uvw[1]) < 0 || sgn(uvw[2]) < 0, pos = sgn(uvw[0]) > 0 || sgn(uvw[1]) > 0 || sgn(uvw[2]) > 0;
+  e.step(L::edges, K::decide)
+      .var("U", uvw[0])
+      .var("V", uvw[1])
+      .var("W", uvw[2])
+      .segment(f.v[1], f.v[2])
+      .label("U")
+      .valued(uvw[0])
+      .segment(f.v[2], f.v[0])
+      .label("V")
+      .valued(uvw[1])
+      .segment(f.v[0], f.v[1])
+      .label("W")
+      .valued(uvw[2]);
+  const bool neg =
+      sgn(uvw[0]) < 0 || sgn(uvw[1]) < 0 || sgn(uvw[2])<0, pos = sgn(uvw[0])> 0 || sgn(uvw[1]) > 0 || sgn(uvw[2]) > 0;
   if (neg && pos) {
     e.step(L::sides, K::miss);
     return {};
@@ -177,7 +212,10 @@ std::vector<Case> small_cases(int count, std::uint64_t seed) {
     for (auto& x : v) x = {q(g.num(-2, 2)), q(g.num(-2, 2)), q(g.num(-2, 2))};
     const V3 e1 = sub(v[1], v[0]), e2 = sub(v[2], v[0]);
     if (g.one_in(10)) v[2] = sub(v[0], Q(-w()) * e1);  // collinear
-    auto in_plane = [&] { const Q s = w(), t = w(); return V3{v[0].x + s * e1.x + t * e2.x, v[0].y + s * e1.y + t * e2.y, v[0].z + s * e1.z + t * e2.z}; };
+    auto in_plane = [&] {
+      const Q s = w(), t = w();
+      return V3{v[0].x + s * e1.x + t * e2.x, v[0].y + s * e1.y + t * e2.y, v[0].z + s * e1.z + t * e2.z};
+    };
     V3 o = {q(g.num(-3, 3)), q(g.num(-3, 3)), q(g.num(-3, 3))};
     if (g.one_in(10)) o = in_plane();
     V3 d = {q(g.num(-2, 2, false)), q(g.num(-2, 2, false)), q(g.num(-2, 2, false))};
@@ -185,7 +223,8 @@ std::vector<Case> small_cases(int count, std::uint64_t seed) {
     if (g.one_in(5)) d = sub(V3{}, d);
     if (sgn(d.x) == 0 && sgn(d.y) == 0 && sgn(d.z) == 0) d.z = 1;
     auto js = [](const V3& x) { return Json::array({x.x.get_str(), x.y.get_str(), x.z.get_str()}); };
-    out.push_back({"small " + std::to_string(k), {{"ray", {{"o", js(o)}, {"d", js(d)}}}, {"triangle", {js(v[0]), js(v[1]), js(v[2])}}}});
+    out.push_back(
+        {"small " + std::to_string(k), {{"ray", {{"o", js(o)}, {"d", js(d)}}}, {"triangle", {js(v[0]), js(v[1]), js(v[2])}}}});
   }
   return out;
 }
@@ -243,19 +282,22 @@ Seen replay(std::string_view id, ExpectFn expect, std::uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("rays: exact step replay, ray-triangle-barycentric: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+TEST_CASE("rays: exact step replay, ray-triangle-barycentric: every value and geometry item matches its closed form",
+          "[rays][steps][replay]") {
   const Seen s = replay("ray-triangle-barycentric", barycentric_expected, 401);
   CHECK(s.lines == recorded_lines(ray::RayTriangleBarycentric::listing(), {"edges"}));
   CHECK(s.miss_lines == std::set<std::string_view>{"denom", "t", "inside"});
 }
 
-TEST_CASE("rays: exact step replay, ray-triangle-mt: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+TEST_CASE("rays: exact step replay, ray-triangle-mt: every value and geometry item matches its closed form",
+          "[rays][steps][replay]") {
   const Seen s = replay("ray-triangle-mt", mt_expected, 402);
   CHECK(s.lines == recorded_lines(ray::RayTriangleMT::listing(), {"pvec", "inv", "tvec", "qvec"}));
   CHECK(s.miss_lines == std::set<std::string_view>{"det", "u", "v", "t"});
 }
 
-TEST_CASE("rays: exact step replay, ray-triangle-watertight: every value and geometry item matches its closed form", "[rays][steps][replay]") {
+TEST_CASE("rays: exact step replay, ray-triangle-watertight: every value and geometry item matches its closed form",
+          "[rays][steps][replay]") {
   const Seen s = replay("ray-triangle-watertight", watertight_expected, 403);
   CHECK(s.lines == recorded_lines(ray::RayTriangleWatertight::listing(), {"retry"}));
   CHECK(s.miss_lines == std::set<std::string_view>{"sides", "det", "sign"});
