@@ -13,6 +13,7 @@ const std::vector<Algorithm>& catalog() {
     register_lines(v);
     register_curves(v);
     register_rays(v);
+    register_fill(v);
     return v;
   }();
   return all;

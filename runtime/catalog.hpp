@@ -84,6 +84,7 @@ std::string catalog_markdown();
 // Families register themselves here (catalog.cpp calls each once, in this order).
 void register_lines(std::vector<Algorithm>& out);
 void register_curves(std::vector<Algorithm>& out);
+void register_fill(std::vector<Algorithm>& out);
 void register_rays(std::vector<Algorithm>& out);
 
 }  // namespace sw

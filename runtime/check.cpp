@@ -256,8 +256,10 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
     if (!numeric.is_string()) throw InputError("line 1: \"numeric\" must be a string");
     const Numeric mode = parse_numeric_for(alg, numeric.get<std::string>());
     const Json input = require(*header, "input", "line 1");
-    // The replay: exact where the algorithm has it, else the reference (transcendental values).
-    const Numeric replay_mode = alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
+    // The replay: exact where the algorithm has it, else the reference (transcendental values). An
+    // int trace replays in int: integer arithmetic is exact, and a fixed-point algorithm records its
+    // values in its own units (triangle-edge: 1/256 pixel).
+    const Numeric replay_mode = mode == Numeric::integer ? Numeric::integer : alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
     if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
     alg.validate(input, replay_mode);
     const Tolerance tol{mode_tolerance(mode), !decisions_only};
@@ -305,7 +307,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
     const Json oracle = alg.oracle(input);
     if (auto d = value_diff(alg.canonical(oracle), alg.canonical((*last)["result"]), tol, false, "result")) throw diverged("result", *d);
     rep.steps = i;
-    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::exact ? "exact oracle" : "reference") +
+    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::reference ? "reference" : "exact oracle") +
                   (tol.rel > 0 && tol.numbers ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))" : "");
   } catch (const Diverged& d) {
     rep.status = 1;

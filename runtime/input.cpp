@@ -87,15 +87,19 @@ const Json& require(const Json& obj, const char* key, const std::string& what) {
   return *it;
 }
 
-void only_keys(const Json& obj, std::initializer_list<const char*> keys, const std::string& what) {
+void only_keys_optional(const Json& obj, std::initializer_list<const char*> keys, std::initializer_list<const char*> optional,
+                        const std::string& what) {
   if (!obj.is_object()) throw InputError(what + ": expected an object");
   for (auto it = obj.begin(); it != obj.end(); ++it) {
     bool known = false;
     for (const char* k : keys) known = known || it.key() == k;
+    for (const char* k : optional) known = known || it.key() == k;
     if (!known) throw InputError(what + ": unknown field \"" + it.key() + "\"");
   }
   for (const char* k : keys) (void)require(obj, k, what);
 }
+
+void only_keys(const Json& obj, std::initializer_list<const char*> keys, const std::string& what) { only_keys_optional(obj, keys, {}, what); }
 
 template <int N> static std::array<Rational, N> parse_array(const Json& obj, const char* key) {
   const Json& a = require(obj, key, "input");

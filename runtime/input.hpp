@@ -25,6 +25,9 @@ Json read_input_arg(const std::string& arg);
 Rational parse_rational(const Json& v, const std::string& what);
 // obj is an object with exactly these fields: throws "unknown field" or "missing field".
 void only_keys(const Json& obj, std::initializer_list<const char*> keys, const std::string& what);
+// The same, where the `optional` fields may also appear.
+void only_keys_optional(const Json& obj, std::initializer_list<const char*> keys, std::initializer_list<const char*> optional,
+                        const std::string& what);
 // obj[key] must exist; throws "missing field" otherwise.
 const Json& require(const Json& obj, const char* key, const std::string& what);
 Vec2<Rational> parse_point2(const Json& obj, const char* key);

@@ -189,3 +189,24 @@ TEST_CASE("check: a geometry item's label, lifetime or value tampered fails and 
   t[i]["geo"][0]["colour"] = "red";  // a second kind key: not an item
   CHECK(check(t).status == 2);
 }
+
+TEST_CASE("check: a float trace's numbers are held to 2^-10 (1 + |exact|): within passes, beyond fails, near 0 too", "[check]") {
+  // The tolerance the kit defines for float: |got - exact| <= 2^-10 (1 + |exact|), so a value that
+  // is 0 exactly may be off by 2^-10 and no more.
+  auto shifted = [](std::vector<Json> lines, std::size_t i, const char* var, int exponent) {
+    const Rational w = parse_rational(lines[i]["vars"][var], "");
+    const Rational step = Rational(1 + abs(w)) / Rational(mpz_class(1) << exponent);
+    lines[i]["vars"][var] = Rational(w + step).get_str();
+    return lines;
+  };
+  const auto lines = trace_lines("dda-line", kDda, Numeric::f32);
+  REQUIRE(check(lines).status == 0);
+  const std::size_t i = find_step(lines, "plot", "qy");
+  CHECK(check(shifted(lines, i, "qy", 12)).status == 0);
+  require_diverges(shifted(lines, i, "qy", 8), i - 1, "variable qy");
+  const auto flat = trace_lines("dda-line", R"({"p0":[0,0],"p1":[10,0]})", Numeric::f32);
+  const std::size_t d = find_step(flat, "init", "dy");
+  REQUIRE(parse_rational(flat[d]["vars"]["dy"], "") == 0);
+  CHECK(check(shifted(flat, d, "dy", 12)).status == 0);
+  require_diverges(shifted(flat, d, "dy", 8), d - 1, "variable dy");
+}

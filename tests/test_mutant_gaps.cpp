@@ -67,7 +67,10 @@ TEST_CASE("trace formats: the JSONL stream and the Recorder agree on every step 
           names.insert(var.name);
           REQUIRE(vars.contains(var.name));
           const auto it = vars.find(var.name);
-          if (var.is_int) {
+          if (var.is_int && var.shape == VarShape::list) {
+            REQUIRE(it->size() == var.count);
+            for (std::uint32_t c = 0; c < var.count; ++c) CHECK((*it)[c].get<std::int64_t>() == t.int_value(var.slot + c));
+          } else if (var.is_int) {
             CHECK(it->get<std::int64_t>() == t.int_value(var.slot));
           } else if (var.count == 1) {
             same_number(t, var.slot, *it);

@@ -40,6 +40,10 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
         plots_.push_back({p, static_cast<std::uint32_t>(s)});
         bounds_.add(double(p.x) - 0.5, double(p.y) - 0.5);
         bounds_.add(double(p.x) + 0.5, double(p.y) + 0.5);
+      } else if (geo.kind == GeoKind::span) {  // row j, columns i0..i1: each a plotted pixel (a fill's spans)
+        const std::int64_t j = t.int_value(geo.slot), i0 = t.int_value(geo.slot + 1), i1 = t.int_value(geo.slot + 2);
+        for (std::int64_t i = i0; i <= i1; ++i) plots_.push_back({Pixel{i, j}, static_cast<std::uint32_t>(s)});
+        if (i0 <= i1) bounds_.add(double(i0) - 0.5, double(j) - 0.5), bounds_.add(double(i1) + 0.5, double(j) + 0.5);
       } else if (geo.kind == GeoKind::circle) {
         const double x = t.geo_double(geo, 0), y = t.geo_double(geo, 1), r = t.geo_double(geo, 2);
         bounds_.add(x - r, y - r);

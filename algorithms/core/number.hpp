@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <gmpxx.h>
 
 namespace sw {
@@ -52,6 +53,13 @@ inline std::int64_t floor_int(const Rational& x) {
 }
 std::int64_t floor_int(const Interval& x);
 template <class T> std::int64_t ceil_int(const T& x) { return -floor_int(T(-x)); }
+// floor(x / unit) and ceil(x / unit) for unit > 0: exact for integers too (fixed point), where
+// C++'s / truncates toward zero.
+template <class T> std::int64_t floor_div(const T& x, const T& unit) {
+  if constexpr (std::is_integral_v<T>) return x / unit - (x % unit != 0 && x < 0);
+  else return floor_int(T(x / unit));
+}
+template <class T> std::int64_t ceil_div(const T& x, const T& unit) { return -floor_div(T(-x), unit); }
 
 inline double to_double(float x) { return x; }
 inline double to_double(double x) { return x; }

@@ -1,0 +1,334 @@
+// The fill family's fills: triangle-dda, triangle-dda-no-offset, triangle-edge, scanline-polygon
+// (registered by specs.cpp). Semantics: docs/fill/semantics.md.
+#include <random>
+#include "adapter.hpp"
+#include "fill/scanline_polygon.hpp"
+#include "fill/triangle_dda.hpp"
+#include "fill/triangle_edge.hpp"
+#include "fill_oracle.hpp"
+#include "pixels.hpp"
+
+namespace sw {
+namespace {
+
+constexpr double kCoordBound = 1073741824.0;        // 2^30: |x|, |y| of every vertex
+constexpr double kFixedCoordBound = 2097152.0;      // 2^21 in int mode: every edge function fits 62 bits
+constexpr std::int64_t kFixedUnit = 256;            // int mode: vertices in 1/256 pixel, llvmpipe's grid
+constexpr double kMaxSamples = 1048576.0;           // 2^20 samples in a fill's bounding box
+constexpr std::size_t kMaxRingVertices = 4096;      // all rings together
+
+// Pixels in scanline order and, when the input has attributes, n values per pixel: the mode's
+// values widened to double, and exact mode's rationals.
+struct FillOutput {
+  std::vector<Pixel> pixels;
+  std::size_t n = 0;
+  std::vector<double> values;
+  std::vector<Rational> exact_values;  // exact mode only
+  friend bool operator==(const FillOutput& a, const FillOutput& b) { return a.pixels == b.pixels && a.values == b.values; }
+};
+
+Json fill_json(const FillOutput& o) {
+  Json r = pixels_json("pixels", {o.pixels});
+  if (o.n == 0) return r;
+  Json vs = Json::array();
+  for (std::size_t p = 0; p < o.pixels.size(); ++p) vs.push_back(std::vector<double>(o.values.begin() + p * o.n, o.values.begin() + (p + 1) * o.n));
+  r["values"] = std::move(vs);
+  return r;
+}
+
+// Wrong pixels against exact: those in one set and not the other (both in scanline order).
+double wrong_pixels(const FillOutput& got, const FillOutput& exact) {
+  std::vector<Pixel> a = got.pixels, b = exact.pixels, diff;
+  auto row_major = [](Pixel p, Pixel q) { return std::pair(p.y, p.x) < std::pair(q.y, q.x); };
+  std::sort(a.begin(), a.end(), row_major);
+  std::sort(b.begin(), b.end(), row_major);
+  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(diff), row_major);
+  return static_cast<double>(diff.size());
+}
+
+// Vertex k of input.<key> as an exact point within the bound.
+Vec2<Rational> parse_vertex(const Json& v, const std::string& what, double bound) {
+  if (!v.is_array() || v.size() != 2) throw InputError(what + ": expected [x, y]");
+  Vec2<Rational> p;
+  for (int a = 0; a < 2; ++a) {
+    const std::string w = what + "[" + std::to_string(a) + "]";
+    p[a] = parse_rational(v[a], w);
+    check_bound(p[a], bound, w);
+    check_digits(p[a], w);
+  }
+  return p;
+}
+
+// The box's sample count, refused beyond the budget.
+void check_budget(const std::vector<Vec2<Rational>>& pts, const std::string& what) {
+  Rational lo[2] = {pts[0].x, pts[0].y}, hi[2] = {pts[0].x, pts[0].y};
+  for (const auto& p : pts)
+    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  const double w = std::max<double>(0, double(num::floor_int(hi[0]) - num::ceil_int(lo[0]) + 1));
+  const double h = std::max<double>(0, double(num::floor_int(hi[1]) - num::ceil_int(lo[1]) + 1));
+  if (w * h > kMaxSamples)
+    throw InputError(what + ": its bounding box holds " + std::to_string(static_cast<long long>(w * h)) + " samples, more than the budget of 2^20");
+}
+
+struct TriangleInput {
+  std::array<Vec2<Rational>, 3> v;
+  std::vector<std::vector<Rational>> attrs;  // empty, or 3 lists of n values
+};
+
+TriangleInput parse_triangle(const Json& j, Numeric n, bool with_attrs) {
+  if (with_attrs) only_keys_optional(j, {"triangle"}, {"attrs"}, "input");
+  else only_keys(j, {"triangle"}, "input");
+  const Json& t = j["triangle"];
+  if (!t.is_array() || t.size() != 3) throw InputError("input.triangle: expected three vertices [[x,y],[x,y],[x,y]]");
+  const bool fixed = n == Numeric::integer;
+  TriangleInput in;
+  for (int k = 0; k < 3; ++k) {
+    const std::string what = "input.triangle[" + std::to_string(k) + "]";
+    in.v[k] = parse_vertex(t[k], what, fixed ? kFixedCoordBound : kCoordBound);
+    for (int a = 0; a < 2; ++a)
+      if (fixed && Rational(in.v[k][a] * kFixedUnit).get_den() != 1)
+        throw InputError(what + "[" + std::to_string(a) + "]: " + in.v[k][a].get_str() + " is not a multiple of 1/256 (int mode is fixed point in 1/256 pixel)");
+  }
+  check_budget({in.v.begin(), in.v.end()}, "input.triangle");
+  if (with_attrs && j.contains("attrs")) {
+    const Json& a = j["attrs"];
+    if (!a.is_array() || a.size() != 3) throw InputError("input.attrs: expected one list of numbers per vertex (three lists)");
+    for (int k = 0; k < 3; ++k) {
+      const std::string what = "input.attrs[" + std::to_string(k) + "]";
+      if (!a[k].is_array() || a[k].empty() || a[k].size() > fill::kMaxAttrs) throw InputError(what + ": expected a list of 1 to 8 numbers");
+      if (k > 0 && a[k].size() != a[0].size())
+        throw InputError(what + ": has " + std::to_string(a[k].size()) + " values, input.attrs[0] has " + std::to_string(a[0].size()) + " (every vertex needs the same count)");
+      in.attrs.emplace_back();
+      for (std::size_t c = 0; c < a[k].size(); ++c) {
+        const std::string w = what + "[" + std::to_string(c) + "]";
+        in.attrs.back().push_back(parse_rational(a[k][c], w));
+        check_bound(in.attrs.back().back(), kCoordBound, w);
+        check_digits(in.attrs.back().back(), w);
+      }
+    }
+  }
+  return in;
+}
+
+template <class Num> FillOutput fill_output(std::vector<Pixel> pixels, std::size_t n, const std::vector<Num>& values) {
+  FillOutput o{std::move(pixels), n, {}, {}};
+  for (const Num& v : values) o.values.push_back(num::to_double(v));
+  if constexpr (std::is_same_v<Num, Rational>) o.exact_values = values;
+  return o;
+}
+
+// Random triangles on the 1/256 grid whose boxes are about `side` samples wide, around the origin.
+std::vector<TriangleInput> random_triangles(std::mt19937_64& rng, int count, double side, bool attrs) {
+  std::uniform_real_distribution<double> u(-side / 2, side / 2), c(-256, 256);
+  auto grid = [&](double x) { return Rational(static_cast<long>(std::floor(x * 256))) / 256; };
+  std::vector<TriangleInput> out;
+  for (int i = 0; i < count; ++i) {
+    TriangleInput in;
+    const double cx = c(rng), cy = c(rng);
+    for (auto& v : in.v) v = {grid(cx + u(rng)), grid(cy + u(rng))};
+    if (attrs)
+      for (int k = 0; k < 3; ++k) in.attrs.push_back({grid(u(rng) + side), grid(u(rng)), grid(u(rng) - side)});
+    out.push_back(std::move(in));
+  }
+  return out;
+}
+
+// Triangles of about 8, 128 and 2048 px^2 (boxes of side 4, 16 and 64).
+std::vector<BenchSet<TriangleInput>> triangle_bench_sets(bool attrs) {
+  std::mt19937_64 rng(20261123);
+  return {{"8px", random_triangles(rng, 4000, 4, attrs)}, {"128px", random_triangles(rng, 1000, 16, attrs)}, {"2048px", random_triangles(rng, 100, 64, attrs)}};
+}
+
+std::vector<Handle> triangle_handles() {
+  std::vector<Handle> h;
+  for (int k = 0; k < 3; ++k) h.push_back({"/triangle/" + std::to_string(k), Handle::Kind::point2, 8, "p" + std::to_string(k)});
+  return h;
+}
+
+template <bool Offset> struct TriangleDdaSpec {
+  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps};
+  using Algo = std::conditional_t<Offset, fill::TriangleDda, fill::TriangleDdaNoOffset>;
+  using Input = TriangleInput;
+  using Output = FillOutput;
+  static constexpr std::string_view family = "fill";
+  static constexpr std::array views{View::plane2d};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+  static inline const std::string example = Offset ? R"({"triangle":[[1.5,0.75],[12.25,4.5],[5,10.5]],"attrs":[[1,0,0],[0,1,0],[0,0,1]]})"
+                                                   : R"({"triangle":[[1.5,0.75],[12.25,4.5],[5,10.5]]})";
+  static Input parse(const Json& j, Numeric n) { return parse_triangle(j, n, true); }
+  static std::vector<Handle> handles() { return triangle_handles(); }
+  template <class Num> static fill::Triangle<Num> prepare(const Input& in) {
+    fill::Triangle<Num> t;
+    for (int k = 0; k < 3; ++k) {
+      t[k].p = to_num<Num>(in.v[k]);
+      t[k].n = in.attrs.empty() ? 0 : in.attrs[k].size();
+      for (std::size_t c = 0; c < t[k].n; ++c) t[k].a[c] = num::from_rational<Num>(in.attrs[k][c]);
+    }
+    return t;
+  }
+  template <class Num, class Probe> static Output compute(const fill::Triangle<Num>& t, Probe& probe) {
+    fill::FillResult<Num> r;
+    fill::triangle_dda<Offset, Num>(t, r, probe);
+    return fill_output<Num>(std::move(r.pixels), t[0].n, r.values);
+  }
+  static Json to_json(const Output& o) { return fill_json(o); }
+  static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
+  // The box's samples (each a plot and a step at most) and two steps per row.
+  static std::size_t estimate_steps(const Input& in) { return 2 * box_samples(in) + 64; }
+  static std::size_t box_samples(const Input& in) {
+    Rational lo = in.v[0].y, hi = in.v[0].y, lx = in.v[0].x, hx = in.v[0].x;
+    for (const auto& v : in.v) lo = std::min(lo, v.y), hi = std::max(hi, v.y), lx = std::min(lx, v.x), hx = std::max(hx, v.x);
+    return static_cast<std::size_t>((num::ceil_int(Rational(hi - lo)) + 2) * (num::ceil_int(Rational(hx - lx)) + 2));
+  }
+  // The covered samples, and at each the plane through the vertices' attributes. The no-offset
+  // variant has no specification but its procedure: its oracle is its exact run, and the tests
+  // count how far that is from the covered samples.
+  static Output oracle(const Input& in) {
+    if constexpr (!Offset) {
+      NoProbe none;
+      return compute<Rational>(prepare<Rational>(in), none);
+    }
+    FillOutput o{oracle::triangle_samples(in.v), in.attrs.empty() ? 0 : in.attrs[0].size(), {}, {}};
+    for (const Pixel& p : o.pixels)
+      for (std::size_t c = 0; c < o.n; ++c) o.exact_values.push_back(oracle::linear_at(in.v, {in.attrs[0][c], in.attrs[1][c], in.attrs[2][c]}, p));
+    for (const Rational& v : o.exact_values) o.values.push_back(v.get_d());
+    return o;
+  }
+  static std::vector<BenchSet<Input>> bench_sets() { return triangle_bench_sets(true); }
+};
+
+struct TriangleEdgeSpec {
+  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps};
+  using Algo = fill::TriangleEdge;
+  using Input = TriangleInput;
+  using Output = FillOutput;
+  static constexpr std::string_view family = "fill";
+  static constexpr std::array views{View::plane2d};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
+  static inline const std::string example = R"({"triangle":[[1.5,0.75],[12.25,4.5],[5,10.5]]})";
+  static Input parse(const Json& j, Numeric n) { return parse_triangle(j, n, false); }
+  static std::vector<Handle> handles() { return triangle_handles(); }
+  template <class Num> static fill::EdgeTriangle<Num> prepare(const Input& in) {
+    if constexpr (std::is_same_v<Num, std::int64_t>) {
+      fill::EdgeTriangle<Num> t{{}, kFixedUnit};
+      for (int k = 0; k < 3; ++k) t.v[k] = {num::floor_int(Rational(in.v[k].x * kFixedUnit)), num::floor_int(Rational(in.v[k].y * kFixedUnit))};
+      return t;
+    } else {
+      return {{to_num<Num>(in.v[0]), to_num<Num>(in.v[1]), to_num<Num>(in.v[2])}, Num(1)};
+    }
+  }
+  template <class Num, class Probe> static Output compute(const fill::EdgeTriangle<Num>& t, Probe& probe) {
+    Output o;
+    fill::triangle_edge<Num>(t, o.pixels, probe);
+    return o;
+  }
+  static Json to_json(const Output& o) { return fill_json(o); }
+  static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
+  static std::size_t estimate_steps(const Input& in) { return 2 * TriangleDdaSpec<true>::box_samples(in) + 64; }
+  static Output oracle(const Input& in) { return {oracle::triangle_samples(in.v), 0, {}, {}}; }
+  static std::vector<BenchSet<Input>> bench_sets() { return triangle_bench_sets(false); }
+};
+
+struct PolygonInput {
+  std::vector<std::vector<Vec2<Rational>>> rings;
+  fill::WindingRule rule = fill::WindingRule::even_odd;
+};
+
+struct ScanlinePolygonSpec {
+  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps, Hook::table_lines};
+  using Algo = fill::ScanlinePolygon;
+  using Input = PolygonInput;
+  using Output = FillOutput;
+  static constexpr std::string_view family = "fill";
+  static constexpr std::array views{View::plane2d, View::table};
+  static constexpr std::array<std::string_view, 2> table_lines{"bucket", "sort"};  // the edge table, then the active list per row
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+  static inline const std::string example =
+      R"({"polygon":[[8,1.5],[10.5,13.25],[1.25,5.5],[14.75,5.5],[5.5,13.25]],"rule":"even-odd"})";
+  static std::vector<Vec2<Rational>> parse_ring(const Json& r, const std::string& what) {
+    if (!r.is_array() || r.size() < 3) throw InputError(what + ": expected at least 3 vertices [[x,y],...]");
+    std::vector<Vec2<Rational>> ring;
+    for (std::size_t k = 0; k < r.size(); ++k) ring.push_back(parse_vertex(r[k], what + "[" + std::to_string(k) + "]", kCoordBound));
+    return ring;
+  }
+  static Input parse(const Json& j, Numeric) {
+    only_keys_optional(j, {"polygon", "rule"}, {"rings"}, "input");
+    Input in;
+    in.rings.push_back(parse_ring(j["polygon"], "input.polygon"));
+    if (j.contains("rings")) {
+      if (!j["rings"].is_array()) throw InputError("input.rings: expected a list of rings [[[x,y],...],...]");
+      for (std::size_t k = 0; k < j["rings"].size(); ++k) in.rings.push_back(parse_ring(j["rings"][k], "input.rings[" + std::to_string(k) + "]"));
+    }
+    const Json& rule = j["rule"];
+    if (rule == "even-odd") in.rule = fill::WindingRule::even_odd;
+    else if (rule == "nonzero") in.rule = fill::WindingRule::nonzero;
+    else throw InputError("input.rule: expected \"even-odd\" or \"nonzero\", got " + rule.dump().substr(0, 40));
+    std::vector<Vec2<Rational>> all;
+    for (const auto& r : in.rings) all.insert(all.end(), r.begin(), r.end());
+    if (all.size() > kMaxRingVertices) throw InputError("input: " + std::to_string(all.size()) + " vertices in all rings, more than the bound of 4096");
+    check_budget(all, "input.polygon");
+    return in;
+  }
+  static std::vector<Handle> handles() {
+    std::vector<Handle> h;
+    for (int k = 0; k < 3; ++k) h.push_back({"/polygon/" + std::to_string(k), Handle::Kind::point2, 8, "p" + std::to_string(k)});
+    return h;
+  }
+  template <class Num> static fill::Polygon<Num> prepare(const Input& in) {
+    fill::Polygon<Num> p{{}, in.rule};
+    for (const auto& r : in.rings) {
+      p.rings.emplace_back();
+      for (const auto& v : r) p.rings.back().push_back(to_num<Num>(v));
+    }
+    return p;
+  }
+  template <class Num, class Probe> static Output compute(const fill::Polygon<Num>& p, Probe& probe) {
+    Output o;
+    fill::scanline_polygon<Num>(p, o.pixels, probe);
+    return o;
+  }
+  static Json to_json(const Output& o) { return fill_json(o); }
+  static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
+  static std::size_t estimate_steps(const Input& in) {
+    std::size_t n = 0;
+    for (const auto& r : in.rings) n += r.size();
+    return 16 * n + 256;
+  }
+  static Output oracle(const Input& in) {
+    return {oracle::polygon_samples(in.rings, in.rule == fill::WindingRule::nonzero ? oracle::FillRule::nonzero : oracle::FillRule::even_odd), 0, {}, {}};
+  }
+  // Random stars of 5 to 12 points, half of them with a hole.
+  static std::vector<BenchSet<Input>> bench_sets() {
+    std::mt19937_64 rng(20261124);
+    std::uniform_real_distribution<double> r(4, 40), a(0, 6.283185307179586);
+    auto grid = [&](double x) { return Rational(static_cast<long>(std::floor(x * 256))) / 256; };
+    BenchSet<Input> stars{"stars", {}};
+    for (int s = 0; s < 400; ++s) {
+      Input in;
+      in.rule = s % 2 ? fill::WindingRule::nonzero : fill::WindingRule::even_odd;
+      const int n = 5 + s % 8;
+      in.rings.emplace_back();
+      for (int k = 0; k < n; ++k) {
+        const double t = a(rng), rad = r(rng);
+        in.rings.back().push_back({grid(rad * std::cos(t)), grid(rad * std::sin(t))});
+      }
+      if (s % 4 < 2) in.rings.push_back({{-2, -2}, {-2, 2}, {2, 2}, {2, -2}});
+      stars.inputs.push_back(std::move(in));
+    }
+    return {stars};
+  }
+};
+
+}  // namespace
+
+void register_fills(std::vector<Algorithm>& out) {
+  out.push_back(make_algorithm<TriangleDdaSpec<true>>());
+  out.push_back(make_algorithm<TriangleDdaSpec<false>>());
+  out.push_back(make_algorithm<TriangleEdgeSpec>());
+  out.push_back(make_algorithm<ScanlinePolygonSpec>());
+}
+
+}  // namespace sw
