@@ -17,3 +17,7 @@ shot 06-far-sphere         # (ray family) the lesson's start step
 shot 07-midpoint-circle        # the decision after the first rows
 shot 08-forward-difference-drift  # the first pixel where float and exact differ
 shot 09-implicit-node           # the move past the node onto the other branch
+shot 10-triangle-start-offset   # a plot in the lower half, the colour from the plane
+shot 11-triangle-no-offset      # the plot of (12, 5), outside the triangle
+shot 12-even-odd-nonzero        # w = 2 in the star's centre: even-odd leaves it out
+shot 13-cohen-sutherland 7      # the accepted piece after three cuts
