@@ -6,6 +6,7 @@
 #include <set>
 #include <random>
 #include "compare.hpp"
+#include "fill_oracle.hpp"
 #include "lesson.hpp"
 #include "pixel_layer.hpp"
 #include "trace_model.hpp"
@@ -229,3 +230,27 @@ TEST_CASE("visualizer compare: float drifts from exact on a long DDA line", "[vi
   CHECK(same.pixel_mismatches == 0);
 }
 #endif  // SW_HAVE_VISUALIZER
+
+TEST_CASE("visualizer texture: a fill's colour attributes paint its pixels, other pixels keep the plot order's colour", "[visualizer][texture]") {
+  // Red at every vertex, half green at one: each pixel's texel is its interpolated colour, 0xAABBGGRR.
+  const auto m = dda(R"({"triangle":[[0,0],[12,1],[3,9]],"attrs":[[1,0,0],[1,0,0],[1,1,0]]})", Numeric::exact, "triangle-dda");
+  MemoryTextures tex;
+  PixelLayer layer(tex);
+  REQUIRE(layer.prepare(m, WorldRect{-2, -2, 14, 11}, 10.0, m->last()));
+  const CellWindow& w = layer.window();
+  const auto& im = tex.image(layer.texture());
+  const std::array<Vec2<Rational>, 3> t{Vec2<Rational>{0, 0}, {12, 1}, {3, 9}};
+  std::size_t painted = 0;
+  for (const PlotEvent& e : m->plots()) {
+    const Rational g = oracle::linear_at(t, {0, 0, 1}, e.cell);  // the green channel's plane
+    const std::uint32_t want = 0xff0000ffu | std::uint32_t(std::lround(255 * g.get_d())) << 8;
+    const int u = int(e.cell.x - w.x0), v = w.h - 1 - int(e.cell.y - w.y0);
+    INFO("cell " << e.cell.x << "," << e.cell.y);
+    CHECK(im.px[std::size_t(v) * w.w + u] == want);
+    ++painted;
+  }
+  CHECK(painted == oracle::triangle_samples(t).size());
+  // Without attributes the same fill is painted by plot order.
+  const auto plain = dda(R"({"triangle":[[0,0],[12,1],[3,9]]})", Numeric::exact, "triangle-dda");
+  CHECK(plain->step_rgba(plain->plots()[0].step) == 0u);
+}

@@ -78,7 +78,11 @@ void PixelLayer::rebuild(const CellWindow& win) {
 
 void PixelLayer::recolour(std::size_t step) {
   const std::size_t last = model_->last();
-  auto colour_of = [&](std::uint32_t first) { return first <= step ? plot_colour(first, last) : 0u; };
+  auto colour_of = [&](std::uint32_t first) {
+    if (first > step) return 0u;
+    const std::uint32_t own = model_->step_rgba(first);  // a colour the step records, else the plot order's
+    return own ? own : plot_colour(first, last);
+  };
   const std::size_t lo = shown_ ? model_->plots_through(std::min(step, shown_step_)) : 0;
   const std::size_t hi = shown_ ? model_->plots_through(std::max(step, shown_step_)) : model_->plots().size();
   if (shown_ && lo == hi) {

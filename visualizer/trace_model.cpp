@@ -1,5 +1,7 @@
 #include "trace_model.hpp"
 #include <algorithm>
+#include <cmath>
+#include <algorithm>
 #include <cstring>
 
 namespace sw::vis {
@@ -32,6 +34,17 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
   name_of_var_.resize(n ? t.at(n - 1).var_end : 0);
   for (std::size_t s = 0; s < n; ++s) {
     const StepRecord& st = t.at(s);
+    for (std::uint32_t v = st.var_begin; v < st.var_end; ++v) {
+      const VarRecord& var = t.var_at(v);
+      if (var.shape != VarShape::colour) continue;
+      std::uint32_t rgba = 0xff000000u;
+      for (std::uint32_t c = 0; c < 3; ++c) {
+        const double x = t.component_double(var, c);
+        rgba |= std::uint32_t(std::lround(255 * std::clamp(std::isfinite(x) ? x : 0.0, 0.0, 1.0))) << (8 * c);
+      }
+      step_rgba_.resize(n, 0u);
+      step_rgba_[s] = rgba;
+    }
     for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
       const GeoRecord& geo = t.geo_at(g);
       if (geo.life != Life::step) lasting_.push_back(g);

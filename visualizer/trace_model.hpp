@@ -53,6 +53,9 @@ class TraceModel {
   std::span<const PlotEvent> plots() const { return plots_; }
   // How many plot events happened at steps <= step.
   std::size_t plots_through(std::size_t step) const;
+  // The colour a step records (a colour variable, e.g. a fill's interpolated attributes) as
+  // 0xAABBGGRR, or 0 if it records none: its pixel is painted in it.
+  std::uint32_t step_rgba(std::size_t step) const { return step < step_rgba_.size() ? step_rgba_[step] : 0u; }
   // The step that first plotted this cell, or kNoStep.
   std::uint32_t step_of_cell(Pixel c) const;
   // Cells and continuous geometry of the whole trace.
@@ -90,6 +93,7 @@ class TraceModel {
   Recorded rec_;
   std::vector<PlotEvent> plots_;
   std::vector<PlotEvent> by_cell_;  // sorted by cell, for hover lookups
+  std::vector<std::uint32_t> step_rgba_;  // empty when no step records a colour
   WorldRect bounds_;
   std::vector<std::optional<std::array<double, 2>>> handles_;
   std::vector<std::uint32_t> lasting_;  // geometry indices with life keep or replace, by step

@@ -103,7 +103,10 @@ void triangle_dda(Triangle<Num> v, FillResult<Num>& out, Probe& probe) {
       const Pixel px{num::floor_int(Num(s.p.x + Num(0.5))), num::floor_int(Num(s.p.y + Num(0.5)))};
       out.pixels.push_back(px);
       out.values.insert(out.values.end(), s.a.begin(), s.a.begin() + s.n);
-      if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("values", s.attrs()).pixel(px).point(s.p).label("s");
+      if constexpr (Probe::on) {
+        probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("values", s.attrs()).pixel(px).point(s.p).label("s");
+        if (s.n == 3) probe.colour("colour", Vec3<Num>{s.a[0], s.a[1], s.a[2]});  // three attributes: the pixel's colour in the views
+      }
       s = s + ds;
       if constexpr (Probe::on) probe.step(L::span_step, StepKind::advance).vec("s", s.p).point(s.p).label("s");
     }

@@ -164,6 +164,7 @@ template <bool Offset> void check_dda(const Tri& tri, const std::vector<std::arr
         const Rational at = la[c] + (sx - l.x) / (r.x - l.x) * (ra[c] - la[c]);
         CHECK(sv["values[" + std::to_string(c) + "]"] == at);
         if (Offset) CHECK(at == oracle::linear_at(tri, attrs[c], px));  // the plane through the attributes, at the sample
+        if (n == 3) CHECK(sv[std::string("colour.") + "rgb"[c]] == at);   // three attributes are the pixel's colour
       }
       CHECK(g.take(GeoKind::pixel).values == std::vector<Rational>{px.x, px.y});
       check_point(g.take(GeoKind::point2), {sx, sy});
@@ -198,10 +199,13 @@ TEST_CASE("fill steps: every value a triangle-dda step records matches its close
   for (int k = 0; k < 60; ++k) tris.push_back(random_tri(rng, k % 2 ? 4 : 1));
   for (const Tri& tri : tris) {
     INFO("triangle " << tri[0].x << "," << tri[0].y << " " << tri[1].x << "," << tri[1].y << " " << tri[2].x << "," << tri[2].y);
-    std::vector<std::array<Rational, 3>> attrs(2);
+    std::vector<std::array<Rational, 3>> attrs(2), rgb(3);
     for (auto& a : attrs)
       for (auto& x : a) x = grid_coord(rng, -4, 4, 8);
+    for (auto& a : rgb)
+      for (auto& x : a) x = grid_coord(rng, 0, 1, 16);
     check_dda<true>(tri, attrs);
+    check_dda<true>(tri, rgb);
     check_dda<true>(tri, {});
     check_dda<false>(tri, attrs);
   }
