@@ -72,6 +72,9 @@ TEST_CASE("trace formats: the JSONL stream and the Recorder agree on every step 
             for (std::uint32_t c = 0; c < var.count; ++c) CHECK((*it)[c].get<std::int64_t>() == t.int_value(var.slot + c));
           } else if (var.is_int) {
             CHECK(it->get<std::int64_t>() == t.int_value(var.slot));
+          } else if (var.shape == VarShape::colour) {
+            REQUIRE(it->contains("rgb"));
+            for (std::uint32_t c = 0; c < 3; ++c) same_number(t, var.slot + c, (*it)["rgb"][c]);
           } else if (var.count == 1) {
             same_number(t, var.slot, *it);
           } else {

@@ -6,70 +6,12 @@
 #include "fill/triangle_dda.hpp"
 #include "fill/triangle_edge.hpp"
 #include "fill_oracle.hpp"
-#include "pixels.hpp"
+#include "fill/fill_common.hpp"
 
 namespace sw {
 namespace {
 
-constexpr double kCoordBound = 1073741824.0;        // 2^30: |x|, |y| of every vertex
-constexpr double kFixedCoordBound = 2097152.0;      // 2^21 in int mode: every edge function fits 62 bits
-constexpr std::int64_t kFixedUnit = 256;            // int mode: vertices in 1/256 pixel, llvmpipe's grid
-constexpr double kMaxSamples = 1048576.0;           // 2^20 samples in a fill's bounding box
-constexpr std::size_t kMaxRingVertices = 4096;      // all rings together
-
-// Pixels in scanline order and, when the input has attributes, n values per pixel: the mode's
-// values widened to double, and exact mode's rationals.
-struct FillOutput {
-  std::vector<Pixel> pixels;
-  std::size_t n = 0;
-  std::vector<double> values;
-  std::vector<Rational> exact_values;  // exact mode only
-  // Modes are compared by their pixels: rounded modes round the values by design.
-  friend bool operator==(const FillOutput& a, const FillOutput& b) { return a.pixels == b.pixels; }
-};
-
-Json fill_json(const FillOutput& o) {
-  Json r = pixels_json("pixels", {o.pixels});
-  if (o.n == 0) return r;
-  Json vs = Json::array();
-  for (std::size_t p = 0; p < o.pixels.size(); ++p) vs.push_back(std::vector<double>(o.values.begin() + p * o.n, o.values.begin() + (p + 1) * o.n));
-  r["values"] = std::move(vs);
-  return r;
-}
-
-// Wrong pixels against exact: those in one set and not the other (both in scanline order).
-double wrong_pixels(const FillOutput& got, const FillOutput& exact) {
-  std::vector<Pixel> a = got.pixels, b = exact.pixels, diff;
-  auto row_major = [](Pixel p, Pixel q) { return std::pair(p.y, p.x) < std::pair(q.y, q.x); };
-  std::sort(a.begin(), a.end(), row_major);
-  std::sort(b.begin(), b.end(), row_major);
-  std::set_symmetric_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(diff), row_major);
-  return static_cast<double>(diff.size());
-}
-
-// Vertex k of input.<key> as an exact point within the bound.
-Vec2<Rational> parse_vertex(const Json& v, const std::string& what, double bound) {
-  if (!v.is_array() || v.size() != 2) throw InputError(what + ": expected [x, y]");
-  Vec2<Rational> p;
-  for (int a = 0; a < 2; ++a) {
-    const std::string w = what + "[" + std::to_string(a) + "]";
-    p[a] = parse_rational(v[a], w);
-    check_bound(p[a], bound, w);
-    check_digits(p[a], w);
-  }
-  return p;
-}
-
-// The box's sample count, refused beyond the budget.
-void check_budget(const std::vector<Vec2<Rational>>& pts, const std::string& what) {
-  Rational lo[2] = {pts[0].x, pts[0].y}, hi[2] = {pts[0].x, pts[0].y};
-  for (const auto& p : pts)
-    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-  const double w = std::max<double>(0, double(num::floor_int(hi[0]) - num::ceil_int(lo[0]) + 1));
-  const double h = std::max<double>(0, double(num::floor_int(hi[1]) - num::ceil_int(lo[1]) + 1));
-  if (w * h > kMaxSamples)
-    throw InputError(what + ": its bounding box holds " + std::to_string(static_cast<long long>(w * h)) + " samples, more than the budget of 2^20");
-}
+using namespace fillspec;
 
 struct TriangleInput {
   std::array<Vec2<Rational>, 3> v;
@@ -91,31 +33,8 @@ TriangleInput parse_triangle(const Json& j, Numeric n, bool with_attrs) {
         throw InputError(what + "[" + std::to_string(a) + "]: " + in.v[k][a].get_str() + " is not a multiple of 1/256 (int mode is fixed point in 1/256 pixel)");
   }
   check_budget({in.v.begin(), in.v.end()}, "input.triangle");
-  if (with_attrs && j.contains("attrs")) {
-    const Json& a = j["attrs"];
-    if (!a.is_array() || a.size() != 3) throw InputError("input.attrs: expected one list of numbers per vertex (three lists)");
-    for (int k = 0; k < 3; ++k) {
-      const std::string what = "input.attrs[" + std::to_string(k) + "]";
-      if (!a[k].is_array() || a[k].empty() || a[k].size() > fill::kMaxAttrs) throw InputError(what + ": expected a list of 1 to 8 numbers");
-      if (k > 0 && a[k].size() != a[0].size())
-        throw InputError(what + ": has " + std::to_string(a[k].size()) + " values, input.attrs[0] has " + std::to_string(a[0].size()) + " (every vertex needs the same count)");
-      in.attrs.emplace_back();
-      for (std::size_t c = 0; c < a[k].size(); ++c) {
-        const std::string w = what + "[" + std::to_string(c) + "]";
-        in.attrs.back().push_back(parse_rational(a[k][c], w));
-        check_bound(in.attrs.back().back(), kCoordBound, w);
-        check_digits(in.attrs.back().back(), w);
-      }
-    }
-  }
+  if (with_attrs && j.contains("attrs")) in.attrs = parse_attrs(j["attrs"], 3);
   return in;
-}
-
-template <class Num> FillOutput fill_output(std::vector<Pixel> pixels, std::size_t n, const std::vector<Num>& values) {
-  FillOutput o{std::move(pixels), n, {}, {}};
-  for (const Num& v : values) o.values.push_back(num::to_double(v));
-  if constexpr (std::is_same_v<Num, Rational>) o.exact_values = values;
-  return o;
 }
 
 // Random triangles on the 1/256 grid whose boxes are about `side` samples wide, around the origin.

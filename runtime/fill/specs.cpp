@@ -1,4 +1,5 @@
-// The fill and clip family's registration: the fills (fills.cpp) and the clippers (clip.cpp).
+// The fill and clip family's registration: the fills (fills.cpp), perspective-correct and affine
+// interpolation (interp.cpp), rasterization-time clipping (raster_clip.cpp) and the clippers (clip.cpp).
 // Semantics: docs/fill/semantics.md.
 #include "catalog.hpp"
 
@@ -6,9 +7,13 @@ namespace sw {
 
 void register_fills(std::vector<Algorithm>& out);  // fills.cpp
 void register_clip(std::vector<Algorithm>& out);   // clip.cpp
+void register_interp(std::vector<Algorithm>& out);  // interp.cpp
+void register_raster_clip(std::vector<Algorithm>& out);  // raster_clip.cpp
 
 void register_fill(std::vector<Algorithm>& out) {
   register_fills(out);
+  register_interp(out);
+  register_raster_clip(out);
   register_clip(out);
 }
 
