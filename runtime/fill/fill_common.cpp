@@ -1,6 +1,7 @@
 #include "fill_common.hpp"
 #include <algorithm>
 #include <iterator>
+#include "fill_oracle.hpp"
 #include "pixels.hpp"
 
 namespace sw::fillspec {
@@ -64,6 +65,14 @@ std::vector<std::vector<Rational>> parse_attrs(const Json& a, std::size_t vertic
     }
   }
   return out;
+}
+
+FillOutput plane_values(std::vector<Pixel> pixels, const std::array<Vec2<Rational>, 3>& v, const std::vector<std::vector<Rational>>& attrs) {
+  FillOutput o{std::move(pixels), attrs.empty() ? 0 : attrs[0].size(), {}, {}};
+  for (const Pixel& p : o.pixels)
+    for (std::size_t c = 0; c < o.n; ++c) o.exact_values.push_back(oracle::linear_at(v, {attrs[0][c], attrs[1][c], attrs[2][c]}, p));
+  for (const Rational& x : o.exact_values) o.values.push_back(x.get_d());
+  return o;
 }
 
 }  // namespace sw::fillspec

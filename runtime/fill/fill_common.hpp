@@ -1,6 +1,7 @@
 // What the fill family's Specs share: the bounds, the pixels-and-values output, and the parsing of
 // vertices, attributes and the sample budget. Semantics and bounds: docs/fill/semantics.md.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -44,5 +45,8 @@ Vec2<Rational> parse_vertex(const Json& v, const std::string& what, double bound
 void check_budget(const std::vector<Vec2<Rational>>& pts, const std::string& what);
 // input.attrs: one list of 1 to 8 numbers per vertex, all of one length.
 std::vector<std::vector<Rational>> parse_attrs(const Json& a, std::size_t vertices);
+// The oracle's output for a triangle's covered pixels: at each, the plane through the vertices'
+// attributes (none when attrs is empty).
+FillOutput plane_values(std::vector<Pixel> pixels, const std::array<Vec2<Rational>, 3>& v, const std::vector<std::vector<Rational>>& attrs);
 
 }  // namespace sw::fillspec

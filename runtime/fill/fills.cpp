@@ -110,11 +110,7 @@ template <bool Offset> struct TriangleDdaSpec {
       NoProbe none;
       return compute<Rational>(prepare<Rational>(in), none);
     }
-    FillOutput o{oracle::triangle_samples(in.v), in.attrs.empty() ? 0 : in.attrs[0].size(), {}, {}};
-    for (const Pixel& p : o.pixels)
-      for (std::size_t c = 0; c < o.n; ++c) o.exact_values.push_back(oracle::linear_at(in.v, {in.attrs[0][c], in.attrs[1][c], in.attrs[2][c]}, p));
-    for (const Rational& v : o.exact_values) o.values.push_back(v.get_d());
-    return o;
+    return plane_values(oracle::triangle_samples(in.v), in.v, in.attrs);
   }
   static std::vector<BenchSet<Input>> bench_sets() { return triangle_bench_sets(true); }
 };

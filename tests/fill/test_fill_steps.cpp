@@ -7,32 +7,15 @@
 #include <set>
 #include "fill/fill_run.hpp"
 #include "fill_oracle.hpp"
-#include "step_values.hpp"
+#include "fill/fill_steps.hpp"
 
 using namespace sw;
 using namespace sw::testing;
 
 namespace {
 
-using V = Vec2<Rational>;
-Rational ceil_q(const Rational& x) { return Rational(num::ceil_int(x)); }
-// The crossing of the line through p0, p1 (p0.y != p1.y) with the row y, and an attribute there.
-Rational X(const V& p0, const V& p1, const Rational& y) { return p0.x + (y - p0.y) * (p1.x - p0.x) / (p1.y - p0.y); }
-// The edge function of p -> q at s: positive left of the edge.
-Rational E(const V& p, const V& q, const V& s) { return (q.x - p.x) * (s.y - p.y) - (q.y - p.y) * (s.x - p.x); }
-bool covered(const std::vector<Pixel>& set, Pixel p) { return std::binary_search(set.begin(), set.end(), p, [](Pixel a, Pixel b) { return std::pair(a.y, a.x) < std::pair(b.y, b.x); }); }
-void check_point(GeoItem& g, const V& p) {
-  CHECK(g.values == std::vector<Rational>{p.x, p.y});
-}
-void check_segment(GeoItem& g, const V& a, const V& b) {
-  CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y});
-}
-void check_polygon(GeoItem& g, const std::vector<V>& ring) {
-  std::vector<Rational> want;
-  for (const V& v : ring) want.push_back(v.x), want.push_back(v.y);
-  CHECK(g.values == want);
-  CHECK(g.life == "keep");
-}
+using namespace sw::testing::fill_steps;
+
 Tri random_tri(std::mt19937_64& rng, long den) {
   Tri t;
   for (auto& v : t) v = {grid_coord(rng, -6, 6, den), grid_coord(rng, -6, 6, den)};

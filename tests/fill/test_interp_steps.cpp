@@ -6,17 +6,15 @@
 #include <cmath>
 #include "fill/interp_run.hpp"
 #include "fill_oracle.hpp"
-#include "step_values.hpp"
+#include "fill/fill_steps.hpp"
 
 using namespace sw;
 using namespace sw::testing;
 
 namespace {
 
-using V = Vec2<Rational>;
+using namespace sw::testing::fill_steps;
 using H = std::vector<Rational>;
-Rational ceil_q(const Rational& x) { return Rational(num::ceil_int(x)); }
-Rational X(const V& p0, const V& p1, const Rational& y) { return p0.x + (y - p0.y) * (p1.x - p0.x) / (p1.y - p0.y); }
 // The linear function with values h0 at y0 and h1 at y1, at y (componentwise).
 H lerp_y(const H& h0, const H& h1, const Rational& y0, const Rational& y1, const Rational& y) {
   H r;

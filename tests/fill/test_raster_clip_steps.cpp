@@ -8,19 +8,16 @@
 #include "fill/raster_clip_run.hpp"
 #include "fill_oracle.hpp"
 #include "fill_raster_oracle.hpp"
-#include "step_values.hpp"
+#include "fill/fill_steps.hpp"
 
 using namespace sw;
 using namespace sw::testing;
 
 namespace {
 
-using V = Vec2<Rational>;
+using namespace sw::testing::fill_steps;
 // The crossing of the line through p0, p1 (p0.y != p1.y) with the row y.
-Rational X(const V& p0, const V& p1, const Rational& y) { return p0.x + (y - p0.y) * (p1.x - p0.x) / (p1.y - p0.y); }
 std::int64_t first(const Rational& v, std::int64_t lo, std::int64_t hi) { return std::min(std::max(num::ceil_int(v), lo), hi); }
-void check_point(GeoItem& g, const V& p) { CHECK(g.values == std::vector<Rational>{p.x, p.y}); }
-void check_segment(GeoItem& g, const V& a, const V& b) { CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y}); }
 
 void check_clip(const Tri& tri, const fill::Screen& sc, const std::vector<std::array<Rational, 3>>& attrs) {
   using L = fill::RasterClip;

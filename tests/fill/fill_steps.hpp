@@ -1,0 +1,28 @@
+// Closed forms and geometry checks shared by the fill family's step replays.
+#pragma once
+#include <algorithm>
+#include <vector>
+#include "step_values.hpp"
+
+namespace sw::testing::fill_steps {
+
+using V = Vec2<Rational>;
+inline Rational ceil_q(const Rational& x) { return Rational(num::ceil_int(x)); }
+// The crossing of the line through p0, p1 (p0.y != p1.y) with the row y.
+inline Rational X(const V& p0, const V& p1, const Rational& y) { return p0.x + (y - p0.y) * (p1.x - p0.x) / (p1.y - p0.y); }
+// The edge function of p -> q at s: positive left of the edge.
+inline Rational E(const V& p, const V& q, const V& s) { return (q.x - p.x) * (s.y - p.y) - (q.y - p.y) * (s.x - p.x); }
+// Whether a pixel set in scanline order holds p.
+inline bool covered(const std::vector<Pixel>& set, Pixel p) {
+  return std::binary_search(set.begin(), set.end(), p, [](Pixel a, Pixel b) { return std::pair(a.y, a.x) < std::pair(b.y, b.x); });
+}
+inline void check_point(GeoItem& g, const V& p) { CHECK(g.values == std::vector<Rational>{p.x, p.y}); }
+inline void check_segment(GeoItem& g, const V& a, const V& b) { CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y}); }
+inline void check_polygon(GeoItem& g, const std::vector<V>& ring) {
+  std::vector<Rational> want;
+  for (const V& v : ring) want.push_back(v.x), want.push_back(v.y);
+  CHECK(g.values == want);
+  CHECK(g.life == "keep");
+}
+
+}  // namespace sw::testing::fill_steps
