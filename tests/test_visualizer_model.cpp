@@ -229,7 +229,6 @@ TEST_CASE("visualizer compare: float drifts from exact on a long DDA line", "[vi
   CHECK_FALSE(same.first_value_divergence);
   CHECK(same.pixel_mismatches == 0);
 }
-#endif  // SW_HAVE_VISUALIZER
 
 TEST_CASE("visualizer texture: a fill's colour attributes paint its pixels, other pixels keep the plot order's colour", "[visualizer][texture]") {
   // Red at every vertex, half green at one: each pixel's texel is its interpolated colour, 0xAABBGGRR.
@@ -254,3 +253,4 @@ TEST_CASE("visualizer texture: a fill's colour attributes paint its pixels, othe
   const auto plain = dda(R"({"triangle":[[0,0],[12,1],[3,9]]})", Numeric::exact, "triangle-dda");
   CHECK(plain->step_rgba(plain->plots()[0].step) == 0u);
 }
+#endif  // SW_HAVE_VISUALIZER
