@@ -22,7 +22,9 @@ std::vector<Polyline2> contour(const std::function<double(double, double)>& f, c
       const double v[4] = {below[i], below[i + 1], above[i + 1], above[i]};
       const std::array<double, 2> p[4] = {{X(i), Y(j)}, {X(i + 1), Y(j)}, {X(i + 1), Y(j + 1)}, {X(i), Y(j + 1)}};
       int mask = 0;
-      for (int k = 0; k < 4; ++k) mask |= (v[k] >= 0) << k;
+      // A branch, not (v[k] >= 0) << k: GCC 12 with -fsanitize=undefined -O2 computes that as 15.
+      for (int k = 0; k < 4; ++k)
+        if (v[k] >= 0) mask |= 1 << k;
       if (mask == 0 || mask == 15) continue;
       auto cross = [&](int k) {  // where f is 0 on edge k, by linear interpolation
         const int m = (k + 1) % 4;
