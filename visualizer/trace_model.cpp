@@ -1,7 +1,6 @@
 #include "trace_model.hpp"
 #include <algorithm>
 #include <cmath>
-#include <algorithm>
 #include <cstring>
 
 namespace sw::vis {
