@@ -22,3 +22,4 @@ shot 11-triangle-no-offset      # the plot of (12, 5), outside the triangle
 shot 12-even-odd-nonzero        # w = 2 in the star's centre: even-odd leaves it out
 shot 13-cohen-sutherland 7      # the accepted piece after three cuts
 shot 14-perspective-checkerboard  # the whole textured floor, exact beside float
+shot 15-affine-checkerboard       # the same floor without the divide: equal rows of squares
