@@ -19,6 +19,7 @@
 #include "core/probe.hpp"
 #include "fill/clip_near.hpp"
 #include "fill/triangle_dda.hpp"
+#include "fill/vary.hpp"
 
 namespace sw::fill {
 
@@ -65,28 +66,8 @@ struct AffineInterp {
 #undef SW_FILL_PERSPECTIVE
 #undef SW_FILL_INTERP
 
-// What the walk carries: the screen position and m values that are linear on screen: h_0 .. h_n-1
-// (a/w, or a for affine) and, for perspective, q = 1/w last.
-template <class Num> struct Hyper {
-  Vec2<Num> p;
-  std::array<Num, kMaxAttrs + 1> h{};
-  std::size_t m = 0;
-
-  std::span<const Num> values() const { return {h.data(), m}; }
-  friend Hyper operator+(const Hyper& u, const Hyper& v) { return zip(u, v, [](const Num& x, const Num& y) { return Num(x + y); }); }
-  friend Hyper operator-(const Hyper& u, const Hyper& v) { return zip(u, v, [](const Num& x, const Num& y) { return Num(x - y); }); }
-  friend Hyper operator*(const Num& s, const Hyper& v) { return zip(v, v, [&](const Num& x, const Num&) { return Num(s * x); }); }
-  friend Hyper operator/(const Hyper& v, const Num& s) { return zip(v, v, [&](const Num& x, const Num&) { return Num(x / s); }); }
-
- private:
-  template <class F> static Hyper zip(const Hyper& u, const Hyper& v, F f) {
-    Hyper r;
-    r.m = u.m;
-    r.p = {f(u.p.x, v.p.x), f(u.p.y, v.p.y)};
-    for (std::size_t k = 0; k < u.m; ++k) r.h[k] = f(u.h[k], v.h[k]);
-    return r;
-  }
-};
+// What the walk carries (a Vary): the screen position and the values that are linear on screen,
+// a_0 .. a_n-1 (a/w, or a for affine) and, for perspective, q = 1/w last.
 
 // The colour a pixel shows in the views: a texture lookup of a checkerboard of unit squares at
 // (a_0, a_1) (a_0 alone when n = 1): light where floor(a_0) + floor(a_1) is even, dark where odd.
@@ -100,41 +81,41 @@ template <class Num> Vec3<Num> checker_texel(std::span<const Num> a) {
 
 // One projected triangle by the double DDA (as triangle_dda), plotting n attributes per pixel.
 template <bool Persp, class L, NumberType Num, StepProbe Probe>
-void interp_triangle(std::array<Hyper<Num>, 3> v, std::size_t n, FillResult<Num>& out, Probe& probe) {
-  std::stable_sort(v.begin(), v.end(), [](const Hyper<Num>& a, const Hyper<Num>& b) { return a.p.y < b.p.y; });
-  const Hyper<Num>&b = v[0], &m = v[1], &t = v[2];
+void interp_triangle(std::array<Vary<Num>, 3> v, std::size_t n, FillResult<Num>& out, Probe& probe) {
+  std::stable_sort(v.begin(), v.end(), [](const Vary<Num>& a, const Vary<Num>& b) { return a.p.y < b.p.y; });
+  const Vary<Num>&b = v[0], &m = v[1], &t = v[2];
   if constexpr (Probe::on) {
     const std::array<Vec2<Num>, 3> corners{b.p, m.p, t.p};
     probe.step(L::sort, StepKind::init).vec("b", b.p).vec("m", m.p).vec("t", t.p).geo_list(GeoKind::polygon, std::span(corners));
   }
   if (!(b.p.y < t.p.y)) return;  // no height: no row
-  auto start = [](const Hyper<Num>& p0, const Hyper<Num>& p1) {
-    const Hyper<Num> dq = (p1 - p0) / Num(p1.p.y - p0.p.y);
+  auto start = [](const Vary<Num>& p0, const Vary<Num>& p1) {
+    const Vary<Num> dq = (p1 - p0) / Num(p1.p.y - p0.p.y);
     return std::pair{p0 + Num(Num(num::ceil_int(p0.p.y)) - p0.p.y) * dq, dq};
   };
-  auto record_edge = [&](auto line, const char* name, const Hyper<Num>& q, const Hyper<Num>& dq, const Hyper<Num>& p0, const Hyper<Num>& p1) {
-    if constexpr (Probe::on) probe.step(line, StepKind::init).vec("q", q.p).list("q_h", q.values()).vec("dq", dq.p).list("dq_h", dq.values()).segment(p0.p, p1.p).label(name).point(q.p).label("q");
+  auto record_edge = [&](auto line, const char* name, const Vary<Num>& q, const Vary<Num>& dq, const Vary<Num>& p0, const Vary<Num>& p1) {
+    if constexpr (Probe::on) probe.step(line, StepKind::init).vec("q", q.p).list("q_h", q.attrs()).vec("dq", dq.p).list("dq_h", dq.attrs()).segment(p0.p, p1.p).label(name).point(q.p).label("q");
   };
   auto [qc, dqc] = start(b, t);
   record_edge(L::long_edge, "c", qc, dqc, b, t);
-  auto span = [&](Hyper<Num> l, Hyper<Num> r) {
+  auto span = [&](Vary<Num> l, Vary<Num> r) {
     if (r.p.x < l.p.x) std::swap(l, r);
     if (!(l.p.x < r.p.x)) {
       if constexpr (Probe::on) probe.step(L::span_start, StepKind::decide).num("l_x", l.p.x).num("r_x", r.p.x).idx("empty", 1);
       return;
     }
-    const Hyper<Num> ds = (r - l) / Num(r.p.x - l.p.x);
-    Hyper<Num> s = l + Num(Num(num::ceil_int(l.p.x)) - l.p.x) * ds;
-    if constexpr (Probe::on) probe.step(L::span_start, StepKind::init).num("l_x", l.p.x).num("r_x", r.p.x).idx("empty", 0).vec("s", s.p).list("ds_h", ds.values()).segment(l.p, r.p).label("span");
+    const Vary<Num> ds = (r - l) / Num(r.p.x - l.p.x);
+    Vary<Num> s = l + Num(Num(num::ceil_int(l.p.x)) - l.p.x) * ds;
+    if constexpr (Probe::on) probe.step(L::span_start, StepKind::init).num("l_x", l.p.x).num("r_x", r.p.x).idx("empty", 0).vec("s", s.p).list("ds_h", ds.attrs()).segment(l.p, r.p).label("span");
     const std::int64_t bound = num::ceil_int(r.p.x) - num::floor_int(l.p.x) + 2;  // the samples in [l_x, r_x), and a stall pass
     for (std::int64_t k = 0; k < bound && s.p.x < r.p.x; ++k) {
       const Pixel px{num::floor_int(Num(s.p.x + Num(0.5))), num::floor_int(Num(s.p.y + Num(0.5)))};
       std::array<Num, kMaxAttrs> a{};
-      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? Num(s.h[c] / s.h[n]) : s.h[c];
+      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? Num(s.a[c] / s.a[n]) : s.a[c];
       out.pixels.push_back(px);
       out.values.insert(out.values.end(), a.begin(), a.begin() + n);
       if constexpr (Probe::on) {
-        auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("h", s.values());
+        auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("h", s.attrs());
         const std::span<const Num> vals(a.data(), n);
         st.list("values", vals).colour("texel", checker_texel<Num>(vals)).pixel(px).point(s.p).label("s");
       }
@@ -142,7 +123,7 @@ void interp_triangle(std::array<Hyper<Num>, 3> v, std::size_t n, FillResult<Num>
       if constexpr (Probe::on) probe.step(L::span_step, StepKind::advance).vec("s", s.p).point(s.p).label("s");
     }
   };
-  auto half = [&](auto edge_line, auto span_line, auto step_line, const char* name, const char* qname, const Hyper<Num>& p0, const Hyper<Num>& p1) {
+  auto half = [&](auto edge_line, auto span_line, auto step_line, const char* name, const char* qname, const Vary<Num>& p0, const Vary<Num>& p1) {
     if (!(p0.p.y < p1.p.y)) {
       if constexpr (Probe::on) probe.step(edge_line, StepKind::decide).idx("flat", 1);
       return;
@@ -175,21 +156,21 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
   }
   std::vector<std::size_t> firsts;  // where each triangle's pixels start
   for (std::size_t f = 0; f + 2 < poly.k; ++f) {
-    std::array<Hyper<Num>, 3> h;
+    std::array<Vary<Num>, 3> h;
     const std::array<std::size_t, 3> idx{0, f + 1, f + 2};
     for (int k = 0; k < 3; ++k) {
       const ClipVertex<Num>& c = poly.c[idx[k]];
       const Num q = Num(Num(1) / c.w());
       h[k].p = {Num(c.c[0] * q), Num(c.c[1] * q)};
-      h[k].m = Persp ? n + 1 : n;
-      for (std::size_t a = 0; a < n; ++a) h[k].h[a] = Persp ? Num(c.a[a] * q) : c.a[a];
-      if constexpr (Persp) h[k].h[n] = q;
+      h[k].n = Persp ? n + 1 : n;
+      for (std::size_t a = 0; a < n; ++a) h[k].a[a] = Persp ? Num(c.a[a] * q) : c.a[a];
+      if constexpr (Persp) h[k].a[n] = q;
     }
     if constexpr (Probe::on) {
       static constexpr const char* sn[3] = {"s0", "s1", "s2"};
       static constexpr const char* hn[3] = {"h0", "h1", "h2"};
       auto& st = probe.step(L::project, StepKind::init).idx("triangle", std::int64_t(f));
-      for (int k = 0; k < 3; ++k) st.vec(sn[k], h[k].p).list(hn[k], h[k].values());
+      for (int k = 0; k < 3; ++k) st.vec(sn[k], h[k].p).list(hn[k], h[k].attrs());
     }
     firsts.push_back(out.pixels.size());
     interp_triangle<Persp, L>(h, n, out, probe);

@@ -9,12 +9,13 @@
 
 namespace sw::fill {
 
-inline constexpr std::size_t kMaxAttrs = 8;
+inline constexpr std::size_t kMaxAttrs = 8;  // per input vertex
+// Room for one more carried value than an input has: perspective-interp carries a/w and 1/w.
 
 template <class Num> struct Vary {
   Vec2<Num> p;
-  std::array<Num, kMaxAttrs> a{};
-  std::size_t n = 0;  // attributes in use
+  std::array<Num, kMaxAttrs + 1> a{};
+  std::size_t n = 0;  // values in use
 
   std::span<const Num> attrs() const { return {a.data(), n}; }
   friend Vary operator+(const Vary& u, const Vary& v) { return zip(u, v, [](const Num& x, const Num& y) { return Num(x + y); }); }

@@ -36,14 +36,19 @@ Vec2<Rational> parse_vertex(const Json& v, const std::string& what, double bound
   return p;
 }
 
-void check_budget(const std::vector<Vec2<Rational>>& pts, const std::string& what) {
+double box_samples(const std::vector<Vec2<Rational>>& pts) {
+  if (pts.empty()) return 0;
   Rational lo[2] = {pts[0].x, pts[0].y}, hi[2] = {pts[0].x, pts[0].y};
   for (const auto& p : pts)
     for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
   const double w = std::max<double>(0, double(num::floor_int(hi[0]) - num::ceil_int(lo[0]) + 1));
   const double h = std::max<double>(0, double(num::floor_int(hi[1]) - num::ceil_int(lo[1]) + 1));
-  if (w * h > kMaxSamples)
-    throw InputError(what + ": its bounding box holds " + std::to_string(static_cast<long long>(w * h)) + " samples, more than the budget of 2^20");
+  return w * h;
+}
+
+void check_budget(const std::vector<Vec2<Rational>>& pts, const std::string& what) {
+  const double n = box_samples(pts);
+  if (n > kMaxSamples) throw InputError(what + ": its bounding box holds " + std::to_string(static_cast<long long>(n)) + " samples, more than the budget of 2^20");
 }
 
 // input.attrs: one list of 1 to 8 numbers per vertex, all of one length.

@@ -41,7 +41,8 @@ Json fill_json(const FillOutput& o);
 double wrong_pixels(const FillOutput& got, const FillOutput& exact);
 // A vertex [x, y] as an exact point within the bound (what names it in errors, e.g. "input.triangle[1]").
 Vec2<Rational> parse_vertex(const Json& v, const std::string& what, double bound);
-// Refuses points whose bounding box holds more than kMaxSamples samples.
+// The samples (i, j) in the points' bounding box, and a refusal of more than kMaxSamples of them.
+double box_samples(const std::vector<Vec2<Rational>>& pts);
 void check_budget(const std::vector<Vec2<Rational>>& pts, const std::string& what);
 // input.attrs: one list of 1 to 8 numbers per vertex, all of one length.
 std::vector<std::vector<Rational>> parse_attrs(const Json& a, std::size_t vertices);

@@ -60,6 +60,12 @@ std::vector<BenchSet<TriangleInput>> triangle_bench_sets(bool attrs) {
   return {{"8px", random_triangles(rng, 4000, 10, attrs)}, {"128px", random_triangles(rng, 1000, 41, attrs)}, {"2048px", random_triangles(rng, 100, 164, attrs)}};
 }
 
+// The box's samples (each a plot or a test and a step at most), and the rows' own steps.
+std::size_t triangle_steps(const TriangleInput& in) {
+  const Rational height = std::max({in.v[0].y, in.v[1].y, in.v[2].y}) - std::min({in.v[0].y, in.v[1].y, in.v[2].y});
+  return static_cast<std::size_t>(2 * box_samples({in.v.begin(), in.v.end()})) + 4 * static_cast<std::size_t>(num::ceil_int(height)) + 64;
+}
+
 std::vector<Handle> triangle_handles() {
   std::vector<Handle> h;
   for (int k = 0; k < 3; ++k) h.push_back({"/triangle/" + std::to_string(k), Handle::Kind::point2, 8, "p" + std::to_string(k)});
@@ -96,12 +102,7 @@ template <bool Offset> struct TriangleDdaSpec {
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // The box's samples (each a plot and a step at most) and two steps per row.
-  static std::size_t estimate_steps(const Input& in) { return 2 * box_samples(in) + 64; }
-  static std::size_t box_samples(const Input& in) {
-    Rational lo = in.v[0].y, hi = in.v[0].y, lx = in.v[0].x, hx = in.v[0].x;
-    for (const auto& v : in.v) lo = std::min(lo, v.y), hi = std::max(hi, v.y), lx = std::min(lx, v.x), hx = std::max(hx, v.x);
-    return static_cast<std::size_t>((num::ceil_int(Rational(hi - lo)) + 2) * (num::ceil_int(Rational(hx - lx)) + 2));
-  }
+  static std::size_t estimate_steps(const Input& in) { return triangle_steps(in); }
   // The covered samples, and at each the plane through the vertices' attributes. The no-offset
   // variant has no specification but its procedure: its oracle is its exact run, and the tests
   // count how far that is from the covered samples.
@@ -143,7 +144,7 @@ struct TriangleEdgeSpec {
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
-  static std::size_t estimate_steps(const Input& in) { return 2 * TriangleDdaSpec<true>::box_samples(in) + 64; }
+  static std::size_t estimate_steps(const Input& in) { return triangle_steps(in); }
   static Output oracle(const Input& in) { return {oracle::triangle_samples(in.v), 0, {}, {}}; }
   static std::vector<BenchSet<Input>> bench_sets() { return triangle_bench_sets(false); }
 };

@@ -29,16 +29,11 @@ template <class Num> fill::ClipTriangle<Num> to_clip(const InterpInput& in) {
 }
 
 // The samples in the box of the clipped polygon's projection (0 when nothing is kept).
-double projected_box_samples(const InterpInput& in) {
+// The corners of the clipped polygon's projection on the screen (none when nothing is kept).
+std::vector<Vec2<Rational>> projected_corners(const InterpInput& in) {
   const oracle::ClippedPolygon poly = oracle::clip_w(in.v, in.attrs, fill::w_near<Rational>());
-  if (poly.corners.size() < 3) return 0;
-  const std::vector<Vec2<Rational>> s = oracle::project(poly.corners);
-  Rational lo[2] = {s[0].x, s[0].y}, hi[2] = {s[0].x, s[0].y};
-  for (const auto& p : s)
-    for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-  const double w = std::max<double>(0, double(num::floor_int(hi[0])) - double(num::ceil_int(lo[0])) + 1);
-  const double h = std::max<double>(0, double(num::floor_int(hi[1])) - double(num::ceil_int(lo[1])) + 1);
-  return w * h;
+  if (poly.corners.size() < 3) return {};
+  return oracle::project(poly.corners);
 }
 
 InterpInput parse_interp(const Json& j) {
@@ -58,10 +53,7 @@ InterpInput parse_interp(const Json& j) {
   }
   const auto attrs = parse_attrs(j["attrs"], 3);
   for (int k = 0; k < 3; ++k) in.attrs[k] = attrs[k];
-  const double samples = projected_box_samples(in);
-  if (samples > kMaxSamples)
-    throw InputError("input.triangle: the box of its projection (clipped at w = 1) holds " + std::to_string(static_cast<long long>(samples)) +
-                     " samples, more than the budget of 2^20");
+  check_budget(projected_corners(in), "input.triangle (projected, clipped at w = 1)");
   return in;
 }
 
@@ -120,7 +112,7 @@ template <bool Persp> struct InterpSpec {
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // The box's samples (a plot and a step each at most), two steps per row, the clipping.
-  static std::size_t estimate_steps(const Input& in) { return static_cast<std::size_t>(2.5 * projected_box_samples(in)) + 128; }
+  static std::size_t estimate_steps(const Input& in) { return static_cast<std::size_t>(2.5 * box_samples(projected_corners(in))) + 128; }
   static Output oracle(const Input& in) {
     const oracle::InterpSamples s = Persp ? oracle::perspective_samples(in.v, in.attrs, fill::w_near<Rational>())
                                           : oracle::affine_samples(in.v, in.attrs, fill::w_near<Rational>());

@@ -1,6 +1,7 @@
 // Closed forms and geometry checks shared by the fill family's step replays.
 #pragma once
 #include <algorithm>
+#include <string_view>
 #include <vector>
 #include "step_values.hpp"
 
@@ -16,6 +17,20 @@ inline Rational E(const V& p, const V& q, const V& s) { return (q.x - p.x) * (s.
 inline bool covered(const std::vector<Pixel>& set, Pixel p) {
   return std::binary_search(set.begin(), set.end(), p, [](Pixel a, Pixel b) { return std::pair(a.y, a.x) < std::pair(b.y, b.x); });
 }
+// Calls check(s, line, values, geometry) for every step of an exact recording of listing L, and
+// requires every variable and geometry item of the step to have been looked at.
+template <class L, class F> void for_each_step(const Recorder<Rational>& t, F&& check) {
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    const std::string_view line = L::lines[t.at(s).line - 1].name;
+    INFO("step " << s << " line " << line);
+    StepValues sv = values_of(t, s);
+    StepGeometry g = geometry_of(t, s);
+    check(s, line, sv, g);
+    require_all_checked(sv, s);
+    require_all_geometry_checked(g, s);
+  }
+}
+
 inline void check_point(GeoItem& g, const V& p) { CHECK(g.values == std::vector<Rational>{p.x, p.y}); }
 inline void check_segment(GeoItem& g, const V& a, const V& b) { CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y}); }
 inline void check_polygon(GeoItem& g, const std::vector<V>& ring) {
@@ -23,6 +38,16 @@ inline void check_polygon(GeoItem& g, const std::vector<V>& ring) {
   for (const V& v : ring) want.push_back(v.x), want.push_back(v.y);
   CHECK(g.values == want);
   CHECK(g.life == "keep");
+}
+// The geometry of a DDA edge's start: the edge p0 -> p1 kept under its label, and its walker q.
+inline void check_edge_start(StepGeometry& g, const V& p0, const V& p1, const char* label, const V& q) {
+  GeoItem& edge = g.take(GeoKind::segment2);
+  check_segment(edge, p0, p1);
+  CHECK(edge.label == label);
+  CHECK(edge.life == "keep");
+  GeoItem& walker = g.take(GeoKind::point2);
+  check_point(walker, q);
+  CHECK(walker.label == "q");
 }
 
 }  // namespace sw::testing::fill_steps

@@ -248,7 +248,9 @@ TEST_CASE("fill: every corpus case in exact and filtered equals the oracle, and 
     const Algorithm& alg = find_algorithm(c["algorithm"].get<std::string>());
     INFO(c["name"].get<std::string>() << " " << alg.id);
     const Json want = alg.oracle(c["input"]);
-    CHECK(alg.run(c["input"], Numeric::exact) == want);
+    // triangle-dda-no-offset's oracle is its own exact run (it has no other specification): only
+    // filtered against it says something, and its distance from the covered samples is tested above.
+    if (alg.id != "triangle-dda-no-offset") CHECK(alg.run(c["input"], Numeric::exact) == want);
     Json filtered = alg.run(c["input"], Numeric::filtered);
     filtered.erase("fallback");
     CHECK(filtered == want);

@@ -63,11 +63,7 @@ template <bool Persp> void check_steps(const ClipTri& tri) {
   H hl, hr;
   Rational sx;
   std::vector<Pixel> plotted;
-  for (std::size_t s = 0; s < t.size(); ++s) {
-    const std::string_view line = L::lines[t.at(s).line - 1].name;
-    INFO("step " << s << " line " << line);
-    StepValues sv = values_of(t, s);
-    StepGeometry g = geometry_of(t, s);
+  for_each_step<L>(t, [&](std::size_t s, std::string_view line, StepValues& sv, StepGeometry& g) {
     auto corner = [&](std::size_t k) {
       CHECK(sv["k"] == Rational(static_cast<long>(k)));
       check_list(sv, "c", H(poly.corners[k].begin(), poly.corners[k].end()));
@@ -209,9 +205,7 @@ template <bool Persp> void check_steps(const ClipTri& tri) {
     } else {
       FAIL("a step on an unexpected line");
     }
-    require_all_checked(sv, s);
-    require_all_geometry_checked(g, s);
-  }
+  });
   CHECK(edge == 3);
   CHECK(tri_index == (poly.corners.size() >= 3 ? poly.corners.size() - 2 : 0));
   std::sort(plotted.begin(), plotted.end(), [](Pixel p, Pixel q) { return std::pair(p.y, p.x) < std::pair(q.y, q.x); });

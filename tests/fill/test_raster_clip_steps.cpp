@@ -51,11 +51,7 @@ void check_clip(const Tri& tri, const fill::Screen& sc, const std::vector<std::a
   std::int64_t j = 0, i = 0;  // the walk's row and column, followed from the listing's order
   std::set<std::int64_t> rows;
   std::vector<Pixel> plotted;
-  for (std::size_t s = 0; s < t.size(); ++s) {
-    const std::string_view line = L::lines[t.at(s).line - 1].name;
-    INFO("step " << s << " line " << line);
-    StepValues sv = values_of(t, s);
-    StepGeometry g = geometry_of(t, s);
+  for_each_step<L>(t, [&](std::size_t s, std::string_view line, StepValues& sv, StepGeometry& g) {
     auto check_vec = [&](const std::string& q, const V& at) {
       CHECK(sv[q + ".x"] == at.x);
       CHECK(sv[q + ".y"] == at.y);
@@ -73,13 +69,7 @@ void check_clip(const Tri& tri, const fill::Screen& sc, const std::vector<std::a
       check_list("q_attrs", qa);
       check_vec("dq", {(e1.x - e0.x) / (e1.y - e0.y), 1});
       check_list("dq_attrs", da);
-      GeoItem& seg = g.take(GeoKind::segment2);
-      check_segment(seg, e0, e1);
-      CHECK(seg.label == label);
-      CHECK(seg.life == "keep");
-      GeoItem& q = g.take(GeoKind::point2);
-      check_point(q, {X(e0, e1, j), j});
-      CHECK(q.label == "q");
+      check_edge_start(g, e0, e1, label, {X(e0, e1, j), j});
     };
     if (line == "sort") {
       check_vec("b", b);
@@ -179,9 +169,7 @@ void check_clip(const Tri& tri, const fill::Screen& sc, const std::vector<std::a
     } else {
       FAIL("a step on an unexpected line");
     }
-    require_all_checked(sv, s);
-    require_all_geometry_checked(g, s);
-  }
+  });
   // The rows walked are exactly the triangle's rows on the screen: [max(ceil b_y, j0), min(ceil t_y, j1)).
   std::set<std::int64_t> want_rows;
   if (b.y < top.y)
