@@ -14,6 +14,7 @@ const std::vector<Algorithm>& catalog() {
     register_curves(v);
     register_rays(v);
     register_fill(v);
+    register_spatial(v);
     return v;
   }();
   return all;

@@ -86,5 +86,6 @@ void register_lines(std::vector<Algorithm>& out);
 void register_curves(std::vector<Algorithm>& out);
 void register_fill(std::vector<Algorithm>& out);
 void register_rays(std::vector<Algorithm>& out);
+void register_spatial(std::vector<Algorithm>& out);
 
 }  // namespace sw
