@@ -20,8 +20,9 @@ enum class View : std::uint8_t {
   table,    // steps x recorded variables
   image,    // a sweep of the algorithm over a grid of inputs, against exact
   plot,     // the table's columns over its rows, against an exact run
+  tree,     // a tree's nodes as a diagram: built so far, the current node, the traversal stack
 };
-inline constexpr std::array<std::string_view, 5> kViewNames = {"plane2d", "orbit3d", "table", "image", "plot"};
+inline constexpr std::array<std::string_view, 6> kViewNames = {"plane2d", "orbit3d", "table", "image", "plot", "tree"};
 constexpr std::string_view view_name(View v) { return kViewNames[static_cast<std::size_t>(v)]; }
 inline std::optional<View> parse_view(std::string_view s) {
   for (std::size_t i = 0; i < kViewNames.size(); ++i)

@@ -10,7 +10,8 @@ PACKAGES=(
   libgmp-dev libmpfr-dev libcgal-dev libglm-dev
   catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
   libimgui-dev libstb-dev libglfw3-dev libgl-dev libosmesa6-dev libgif-dev
-  xvfb xauth libembree-dev fonts-dejavu-core
+  xvfb xauth libembree-dev fonts-dejavu-core libtinyobjloader-dev libnanoflann-dev
+  libcgal-demo
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -22,6 +23,9 @@ if ((${#missing[@]})); then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
+
+# The real meshes of CGAL's data set, for the bench and the mesh lessons (out/meshes).
+bash scripts/meshes.sh out/meshes >/dev/null
 
 BUILD=${1:-build}
 shift || true

@@ -3,6 +3,7 @@
 // Likewise every geometry item, and a check that fails for an item no expectation took.
 #pragma once
 #include <catch2/catch.hpp>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -107,6 +108,27 @@ inline void require_all_geometry_checked(const StepGeometry& g, std::size_t step
   for (const GeoItem& item : g.items) {
     INFO("step " << step << " records a " << geo_name(item.kind) << " with no expectation");
     CHECK(item.checked);
+  }
+}
+
+// Calls check(s, line, values, geometry) for every step of listing L at scope 0 of an exact
+// recording, requiring every variable and geometry item to be looked at; nested steps (a callee's
+// listing) go to `nested`, and without one a nested step fails.
+template <class L, class F> void for_each_step(const Recorder<Rational>& t, F&& check, const std::function<void(std::size_t)>& nested = {}) {
+  for (std::size_t s = 0; s < t.size(); ++s) {
+    if (t.at(s).scope != 0) {
+      INFO("nested step " << s);
+      REQUIRE(nested);
+      nested(s);
+      continue;
+    }
+    const std::string_view line = L::lines[t.at(s).line - 1].name;
+    INFO("step " << s << " line " << line);
+    StepValues sv = values_of(t, s);
+    StepGeometry g = geometry_of(t, s);
+    check(s, line, sv, g);
+    require_all_checked(sv, s);
+    require_all_geometry_checked(g, s);
   }
 }
 

@@ -122,5 +122,5 @@ TEST_CASE("view hooks: declared views and table lines", "[views]") {
   }
   CHECK(find_algorithm("poly-forward-diff").table_lines == std::vector<std::string_view>{"start", "step"});
   for (std::size_t k = 0; k < kViewNames.size(); ++k) CHECK(parse_view(kViewNames[k]) == static_cast<View>(k));
-  CHECK_FALSE(parse_view("tree"));
+  CHECK_FALSE(parse_view("forest"));
 }

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 #include "theme.hpp"
 
 namespace sw::vis {
@@ -219,6 +221,8 @@ void PixelCanvas::paint_items(ImDrawList* dl, const TraceModel& m, std::size_t s
   // Zoomed out, the pixels are thinner than the lines: draw those faint so that the pixels show.
   const ImU32 line_col = scale_ < 4 ? IM_COL32(240, 240, 245, 110) : theme::kSegment;
   const float thick = scale_ < 4 ? 1.f : 2.f;
+  struct Label { ImVec2 at; ImU32 col; std::string text; };
+  std::vector<Label> labels;
   for (std::uint32_t g : m.visible_items(step)) {
     const GeoRecord& geo = t.geo_at(g);
     const auto value = t.geo_value(geo);
@@ -272,7 +276,18 @@ void PixelCanvas::paint_items(ImDrawList* dl, const TraceModel& m, std::size_t s
     if (!geo.label) continue;
     char buf[64];
     if (value) std::snprintf(buf, sizeof buf, "%s = %.6g", geo.label, *value);
-    dl->AddText(ImVec2(label_at.x + 8, label_at.y + 2), value ? col : theme::kLabel, value ? buf : geo.label);
+    labels.push_back({ImVec2(label_at.x + 8, label_at.y + 2), value ? col : theme::kLabel, value ? buf : geo.label});
+  }
+  // Labels last, newest first (the current step's win), and none over another: where many kept
+  // items end at one place (lines across a cell), one readable label beats a stack of them.
+  std::vector<ImVec4> placed;
+  for (auto l = labels.rbegin(); l != labels.rend(); ++l) {
+    const ImVec2 size = ImGui::CalcTextSize(l->text.c_str());
+    const ImVec4 r(l->at.x, l->at.y, l->at.x + size.x, l->at.y + size.y);
+    const bool covers = std::any_of(placed.begin(), placed.end(), [&](const ImVec4& q) { return r.x < q.z && q.x < r.z && r.y < q.w && q.y < r.w; });
+    if (covers) continue;
+    placed.push_back(r);
+    dl->AddText(l->at, l->col, l->text.c_str());
   }
 }
 

@@ -40,7 +40,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
   r->add_option("--size", o.size, "Frame size WxH (default 1280x800)");
   r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
-  r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot; default its first)");
+  r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree; default the lesson's, else the first)");
   return r;
 }
 

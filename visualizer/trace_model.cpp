@@ -46,7 +46,7 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
     }
     for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
       const GeoRecord& geo = t.geo_at(g);
-      if (geo.life != Life::step) lasting_.push_back(g);
+      if (geo.life != Life::step) lasting_.push_back(g), lasting_end_.push_back(st.scope ? static_cast<std::uint32_t>(s) : kNoStep);
       if (geo.kind == GeoKind::pixel) {
         const Pixel p{t.int_value(geo.slot), t.int_value(geo.slot + 1)};
         plots_.push_back({p, static_cast<std::uint32_t>(s)});
@@ -79,6 +79,11 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
       name_of_var_[v] = static_cast<std::uint8_t>(it - names_.begin());
     }
   }
+  // A nested item (its step stored above) ends at the next step of scope 0; none: it lasts.
+  std::vector<std::uint32_t> next_own(n, kNoStep);
+  for (std::size_t s = n; s-- > 1;) next_own[s - 1] = t.at(s).scope == 0 ? static_cast<std::uint32_t>(s) : next_own[s];
+  for (std::uint32_t& end : lasting_end_)
+    if (end != kNoStep) end = next_own[end];
   // Checkpoint c holds, per name, the latest var record among steps [0, c * kCheckpoint).
   std::vector<std::uint32_t> latest(names_.size(), kNoStep);
   for (std::size_t s = 0; s <= n; ++s) {
@@ -144,10 +149,8 @@ std::vector<std::uint32_t> TraceModel::visible_items(std::size_t step) const {
     out.push_back(g);
   };
   // Geometry indices grow with the step, so the lasting items before this step are a prefix.
-  for (std::uint32_t g : lasting_) {
-    if (g >= st.geo_begin) break;
-    add(g);
-  }
+  for (std::size_t i = 0; i < lasting_.size() && lasting_[i] < st.geo_begin; ++i)
+    if (step < lasting_end_[i]) add(lasting_[i]);
   for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) add(g);
   std::erase(out, kNoStep);
   return out;

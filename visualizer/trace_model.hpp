@@ -72,6 +72,8 @@ class TraceModel {
 
   // The geometry items a view shows at `step` (indices for trace().geo_at), by their lifetimes:
   // the kept items of steps <= step, the latest of each replaced label, then the step's own items.
+  // A nested call's kept items end with the call (at the next step of the algorithm's own listing):
+  // they are the callee's working state; what the caller wants shown, it keeps itself.
   std::vector<std::uint32_t> visible_items(std::size_t step) const;
   // Every kept or replacing item of the whole trace, in order (what a view frames).
   std::span<const std::uint32_t> lasting_items() const { return lasting_; }
@@ -97,6 +99,7 @@ class TraceModel {
   WorldRect bounds_;
   std::vector<std::optional<std::array<double, 2>>> handles_;
   std::vector<std::uint32_t> lasting_;  // geometry indices with life keep or replace, by step
+  std::vector<std::uint32_t> lasting_end_;  // per lasting item, the first step it is gone (nested calls' items)
   std::vector<std::string_view> names_;
   std::vector<std::uint8_t> name_of_var_;        // var record -> index into names_
   std::vector<std::uint32_t> checkpoints_;       // names_.size() entries per checkpoint

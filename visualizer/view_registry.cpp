@@ -4,6 +4,7 @@
 #include "pixel_canvas.hpp"
 #include "plot_view.hpp"
 #include "table_view.hpp"
+#include "tree_view.hpp"
 
 namespace sw::vis {
 namespace {
@@ -19,6 +20,7 @@ constexpr ViewInfo kViews[] = {
     {View::table, "Table", "One row per step (or per iteration), one column per recorded variable", make_with<TableCanvas>},
     {View::image, "Sweep", "The algorithm run over a grid of inputs, against exact", make_with<ImageCanvas>},
     {View::plot, "Plot", "A column of the table over its rows, against an exact run", make_with<PlotCanvas>},
+    {View::tree, "Tree", "The tree's nodes: built so far, the current node, the traversal stack", make_with<TreeCanvas>},
 };
 static_assert(std::size(kViews) == kViewNames.size(), "one registry entry per View");
 

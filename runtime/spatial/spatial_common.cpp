@@ -64,7 +64,7 @@ struct LineReader {
     return false;
   }
   [[noreturn]] void fail(const std::string& why) const {
-    throw InputError(path + ":" + std::to_string(number) + ": " + why);
+    throw InputError(path + (number ? ":" + std::to_string(number) : std::string()) + ": " + why);
   }
   double coord(std::istringstream& s) const {
     std::string tok;

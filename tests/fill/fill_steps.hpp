@@ -17,19 +17,7 @@ inline Rational E(const V& p, const V& q, const V& s) { return (q.x - p.x) * (s.
 inline bool covered(const std::vector<Pixel>& set, Pixel p) {
   return std::binary_search(set.begin(), set.end(), p, [](Pixel a, Pixel b) { return std::pair(a.y, a.x) < std::pair(b.y, b.x); });
 }
-// Calls check(s, line, values, geometry) for every step of an exact recording of listing L, and
-// requires every variable and geometry item of the step to have been looked at.
-template <class L, class F> void for_each_step(const Recorder<Rational>& t, F&& check) {
-  for (std::size_t s = 0; s < t.size(); ++s) {
-    const std::string_view line = L::lines[t.at(s).line - 1].name;
-    INFO("step " << s << " line " << line);
-    StepValues sv = values_of(t, s);
-    StepGeometry g = geometry_of(t, s);
-    check(s, line, sv, g);
-    require_all_checked(sv, s);
-    require_all_geometry_checked(g, s);
-  }
-}
+using testing::for_each_step;
 
 inline void check_point(GeoItem& g, const V& p) { CHECK(g.values == std::vector<Rational>{p.x, p.y}); }
 inline void check_segment(GeoItem& g, const V& a, const V& b) { CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y}); }
