@@ -23,3 +23,6 @@ shot 12-even-odd-nonzero        # w = 2 in the star's centre: even-odd leaves it
 shot 13-cohen-sutherland 7      # the accepted piece after three cuts
 shot 14-perspective-checkerboard  # the whole textured floor, exact beside float
 shot 15-affine-checkerboard       # the same floor without the divide: equal rows of squares
+shot 16-kd-sah                  # node 2's x cut at 8: an empty side is cheaper than halving
+shot 17-bsp-painter             # half painted, back to front
+shot 18-kd-ray-mesh             # (needs out/meshes) the hit beyond the leaf, on the tree

@@ -2,7 +2,9 @@
 // and the float-against-exact comparison.
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <map>
+#include <unistd.h>
 #include <set>
 #include <random>
 #include "compare.hpp"
@@ -117,6 +119,19 @@ TEST_CASE("visualizer lesson: malformed lessons name the problem and the place",
   CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\n---\n## on line 99\nx\n"), Catch::Contains("bad.md:5") && Catch::Contains("not a listing line"));
   CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\n---\n## on kind jump\nx\n"), Catch::Contains("unknown step kind"));
   CHECK_THAT(error_of(head + "---\n"), Catch::Contains("input"));
+  CHECK_THAT(error_of(head + "input: {\"p0\":[0,0],\"p1\":[5,2]}\nshow: tree\n---\n"), Catch::Contains("bad.md:4") && Catch::Contains("dda-line declares plane2d"));
+}
+
+TEST_CASE("visualizer lesson: show opens a declared view, and a relative mesh is found beside the lesson", "[visualizer][lesson]") {
+  const auto dir = std::filesystem::temp_directory_path() / ("stepwise-lesson-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "m");
+  std::ofstream(dir / "m" / "t.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  std::ofstream(dir / "l.md") << "---\nalgorithm: bvh-build\ninput: {\"mesh\":\"m/t.off\"}\nshow: orbit3d\n---\nIntro.\n";
+  const Lesson l = load_lesson(dir / "l.md");
+  REQUIRE(l.show);
+  CHECK(*l.show == View::orbit3d);
+  CHECK(l.input["mesh"] == (dir / "m" / "t.off").lexically_normal().string());
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("visualizer model: plot order, cell lookup and state with changes", "[visualizer][model]") {

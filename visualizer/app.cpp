@@ -38,6 +38,7 @@ bool App::open_lesson(const std::filesystem::path& file) {
       error_ = file.filename().string() + ": " + err;
       return false;
     }
+    if (lesson_->show) set_view(*lesson_->show);
     set_step(lesson_->start_step);
     if (lesson_->focus) jump_and_focus(lesson_->start_step);
     return true;

@@ -1,4 +1,5 @@
 #include "lesson.hpp"
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <fstream>
@@ -77,7 +78,8 @@ Lesson parse_lesson(const std::string& text, const std::string& where) {
   if (lines.empty() || trim(lines[0]) != "---") throw InputError(at(0) + ": a lesson starts with a '---' front-matter line");
   Lesson lesson;
   lesson.path = where;
-  std::string alg_id, numeric = "exact", compare, input_text, start_step;
+  std::string alg_id, numeric = "exact", compare, input_text, start_step, show;
+  std::size_t show_line = 0;
   std::size_t i = 1, input_line = 0;
   for (; i < lines.size() && trim(lines[i]) != "---"; ++i) {
     const std::string l = trim(lines[i]);
@@ -93,7 +95,8 @@ Lesson parse_lesson(const std::string& text, const std::string& where) {
     else if (key == "step") start_step = value;
     else if (key == "view" && (value == "fit" || value == "step")) lesson.focus = value == "step";
     else if (key == "view") throw InputError(at(i) + ": 'view: " + value + "': expected fit or step");
-    else throw InputError(at(i) + ": unknown front-matter key '" + key + "' (title, algorithm, input, numeric, compare, step, view)");
+    else if (key == "show") show = value, show_line = i;
+    else throw InputError(at(i) + ": unknown front-matter key '" + key + "' (title, algorithm, input, numeric, compare, step, view, show)");
   }
   if (i >= lines.size()) throw InputError(at(0) + ": the front matter has no closing '---' line");
   if (alg_id.empty()) throw InputError(at(0) + ": the front matter needs 'algorithm: <id>'");
@@ -103,10 +106,24 @@ Lesson parse_lesson(const std::string& text, const std::string& where) {
     lesson.numeric = parse_numeric_for(*lesson.algorithm, numeric);
     if (!compare.empty()) lesson.compare = parse_numeric_for(*lesson.algorithm, compare);
     lesson.input = parse_json_text(input_text, "input");
+    // A relative mesh file is relative to the lesson's own directory, not to the working directory.
+    if (lesson.input.is_object() && lesson.input.contains("mesh") && lesson.input["mesh"].is_string()) {
+      const std::filesystem::path mesh = lesson.input["mesh"].get<std::string>();
+      if (mesh.is_relative()) lesson.input["mesh"] = (std::filesystem::path(where).parent_path() / mesh).lexically_normal().string();
+    }
     lesson.algorithm->validate(lesson.input, lesson.numeric);
     if (lesson.compare) lesson.algorithm->validate(lesson.input, *lesson.compare);
   } catch (const InputError& e) {
     throw InputError(at(input_line ? input_line : 0) + ": " + e.what());
+  }
+  if (!show.empty()) {
+    lesson.show = parse_view(show);
+    const auto& views = lesson.algorithm->views;
+    if (!lesson.show || std::find(views.begin(), views.end(), *lesson.show) == views.end()) {
+      std::string declared;
+      for (View v : views) declared += (declared.empty() ? "" : ", ") + std::string(view_name(v));
+      throw InputError(at(show_line) + ": 'show: " + show + "': " + std::string(lesson.algorithm->id) + " declares " + declared);
+    }
   }
   if (!start_step.empty()) {
     auto [p, ec] = std::from_chars(start_step.data(), start_step.data() + start_step.size(), lesson.start_step);

@@ -25,6 +25,7 @@ struct Lesson {
   std::optional<Numeric> compare;  // a second number type, shown side by side
   std::size_t start_step = 0;      // where the timeline starts
   bool focus = false;              // "view: step": zoom in on the start step, not the whole trace
+  std::optional<View> show;        // "show: tree": the declared view to open on (default: the first)
   std::vector<Narration> sections;
 
   // The narration for a step: its listing line wins over its kind; nullptr if none.
@@ -33,7 +34,8 @@ struct Lesson {
 };
 
 // Parses lesson text; `where` names the file in errors. Throws InputError ("lesson.md:3: ...").
-// Validates the algorithm, the numerics and the input against the catalog.
+// Validates the algorithm, the numerics and the input against the catalog. A relative "mesh" file
+// in the input is taken relative to where's directory.
 Lesson parse_lesson(const std::string& text, const std::string& where);
 Lesson load_lesson(const std::filesystem::path& path);
 
