@@ -15,6 +15,7 @@ const std::vector<Algorithm>& catalog() {
     register_rays(v);
     register_fill(v);
     register_spatial(v);
+    register_lighting(v);
     return v;
   }();
   return all;

@@ -87,5 +87,6 @@ void register_curves(std::vector<Algorithm>& out);
 void register_fill(std::vector<Algorithm>& out);
 void register_rays(std::vector<Algorithm>& out);
 void register_spatial(std::vector<Algorithm>& out);
+void register_lighting(std::vector<Algorithm>& out);
 
 }  // namespace sw

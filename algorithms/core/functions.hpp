@@ -63,7 +63,7 @@ inline Rooted<Rational> root(const Rational& x) {
 template <class Num> Num sqrt_of(const Num& x) { return root(x).value; }
 
 // Transcendental functions: float and double by <cmath>, Rational at 300 bits (reference mode).
-enum class Fn { sin, cos, tan, atan2 };
+enum class Fn { sin, cos, tan, atan2, pow, exp, acos, atan };
 inline Rational mpfr_eval(Fn f, const Rational& x, const Rational& y = Rational(1)) {
   mpfr_t a, b;
   mpfr_inits2(kReferenceBits, a, b, static_cast<mpfr_ptr>(nullptr));
@@ -74,6 +74,10 @@ inline Rational mpfr_eval(Fn f, const Rational& x, const Rational& y = Rational(
     case Fn::cos: mpfr_cos(a, a, MPFR_RNDN); break;
     case Fn::tan: mpfr_tan(a, a, MPFR_RNDN); break;
     case Fn::atan2: mpfr_atan2(a, a, b, MPFR_RNDN); break;  // atan2(x = y-coordinate, y = x-coordinate)
+    case Fn::pow: mpfr_pow(a, a, b, MPFR_RNDN); break;      // x^y
+    case Fn::exp: mpfr_exp(a, a, MPFR_RNDN); break;
+    case Fn::acos: mpfr_acos(a, a, MPFR_RNDN); break;
+    case Fn::atan: mpfr_atan(a, a, MPFR_RNDN); break;
   }
   Rational r;
   mpfr_get_q(r.get_mpq_t(), a);
@@ -100,6 +104,40 @@ template <class Num> Num atan2(const Num& y, const Num& x) {
   } else {
     return std::atan2(y, x);
   }
+}
+// x^y for x >= 0 (the caller decided the sign; 0^0 = 1). Rational: exact for an integer
+// 0 <= y <= 64 (so an exponent 1 or 0 leaves the value untouched: Minnaert's k = 1 is Lambert
+// exactly, and GL's integer shininess and spot exponents stay exact) and for x = 0, else 300-bit MPFR.
+template <class Num> Num pow(const Num& x, const Num& y) {
+  if constexpr (std::is_same_v<Num, Rational>) {
+    if (sgn(y) == 0) return Rational(1);
+    if (sgn(x) == 0) return Rational(0);  // 0^y for y > 0 (y < 0 has no rational value; callers never ask)
+    if (y.get_den() == 1 && sgn(y) > 0 && y <= 64) {
+      const unsigned long e = y.get_num().get_ui();
+      Rational r;
+      mpz_pow_ui(r.get_num_mpz_t(), x.get_num_mpz_t(), e);
+      mpz_pow_ui(r.get_den_mpz_t(), x.get_den_mpz_t(), e);
+      return r;  // canonical: powers of coprime integers stay coprime
+    }
+    return mpfr_eval(Fn::pow, x, y);
+  } else {
+    return std::pow(x, y);
+  }
+}
+// e^x; Rational: exact at x = 0.
+template <class Num> Num exp(const Num& x) {
+  if constexpr (std::is_same_v<Num, Rational>) return sgn(x) == 0 ? Rational(1) : mpfr_eval(Fn::exp, x);
+  else return std::exp(x);
+}
+// acos(x) for x in [-1, 1]; Rational: exact at x = 1.
+template <class Num> Num acos(const Num& x) {
+  if constexpr (std::is_same_v<Num, Rational>) return x == 1 ? Rational(0) : mpfr_eval(Fn::acos, x);
+  else return std::acos(x);
+}
+// atan(x); Rational: exact at x = 0.
+template <class Num> Num atan(const Num& x) {
+  if constexpr (std::is_same_v<Num, Rational>) return sgn(x) == 0 ? Rational(0) : mpfr_eval(Fn::atan, x);
+  else return std::atan(x);
 }
 template <class Num> Num pi() {
   if constexpr (std::is_same_v<Num, Rational>) return Rational(4) * mpfr_eval(Fn::atan2, Rational(1), Rational(1));

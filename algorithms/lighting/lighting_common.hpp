@@ -1,0 +1,118 @@
+// What every reflection model shares: the shading frame (normalise N, L, E visibly; decide the
+// horizon and the mirror side exactly on the raw vectors), the half vector and the mirror
+// direction, and the listing lines of those steps (each model's listing includes them).
+// Semantics: docs/lighting/semantics.md.
+#pragma once
+#include <cmath>
+#include <optional>
+#include <type_traits>
+#include "core/functions.hpp"
+#include "core/number.hpp"
+#include "core/probe.hpp"
+#include "lighting/brdf.hpp"
+
+namespace sw::lighting {
+
+// The frame's lines, first in every model's listing.
+#define SW_LIGHTING_FRAME_LINES(X) \
+  X(normalise, "n <- N/|N|; l <- L/|L|; e <- E/|E|       -- N, L, E as given, any length") \
+  X(horizon, "lit <- N.L > 0; seen <- N.E > 0          -- exact signs of the raw dot products") \
+  X(below, "if not (lit and seen): term <- 0; stop    -- light or eye behind the surface")
+
+// The exact signs of the frame's polynomials in the raw vectors. Rational: directly. float and
+// double: evaluated in double with a forward error bound (a float's products are exact in double);
+// when the bound does not separate the value from 0, or a product may have underflowed, the same
+// polynomial in exact rationals decides (the inputs convert to rationals exactly).
+namespace detail {
+inline constexpr double kEps = 0x1p-53;
+inline constexpr double kTiny = 0x1p-900;  // below this a bound may have lost products to underflow
+
+inline Vec3<Rational> exact3(const Vec3<Rational>& v) { return v; }
+template <class Num> Vec3<Rational> exact3(const Vec3<Num>& v) {
+  return {num::to_rational(double(v.x)), num::to_rational(double(v.y)), num::to_rational(double(v.z))};
+}
+inline int sgn_q(const Rational& q) { return sgn(q); }
+inline double dot_d(const Vec3<double>& a, const Vec3<double>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline double dot_abs(const Vec3<double>& a, const Vec3<double>& b) {
+  return std::fabs(a.x * b.x) + std::fabs(a.y * b.y) + std::fabs(a.z * b.z);
+}
+template <class Num> Vec3<double> widen(const Vec3<Num>& v) { return {double(v.x), double(v.y), double(v.z)}; }
+}  // namespace detail
+
+// sign(a.b)
+template <class Num> int sign_dot(const Vec3<Num>& a, const Vec3<Num>& b) {
+  if constexpr (std::is_same_v<Num, Rational>) {
+    return sgn(dot(a, b));
+  } else {
+    const Vec3<double> x = detail::widen(a), y = detail::widen(b);
+    const double s = detail::dot_d(x, y), bound = 4 * detail::kEps * detail::dot_abs(x, y);
+    if (std::fabs(s) > bound && bound > detail::kTiny) return s > 0 ? 1 : -1;
+    return sgn(dot(detail::exact3(a), detail::exact3(b)));
+  }
+}
+
+// sign(2 (N.L)(N.E) - (N.N)(L.E)): |N|^2 |L| |E| times r.e, with r the mirror of l about n.
+template <class Num> int sign_mirror(const Vec3<Num>& n, const Vec3<Num>& l, const Vec3<Num>& e) {
+  auto exact = [&] {
+    const Vec3<Rational> N = detail::exact3(n), L = detail::exact3(l), E = detail::exact3(e);
+    return sgn(Rational(2 * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E)));
+  };
+  if constexpr (std::is_same_v<Num, Rational>) {
+    return exact();
+  } else {
+    const Vec3<double> N = detail::widen(n), L = detail::widen(l), E = detail::widen(e);
+    const double s = 2 * detail::dot_d(N, L) * detail::dot_d(N, E) - detail::dot_d(N, N) * detail::dot_d(L, E);
+    const double a = 2 * detail::dot_abs(N, L) * detail::dot_abs(N, E) + detail::dot_abs(N, N) * detail::dot_abs(L, E);
+    const double bound = 16 * detail::kEps * a;  // 9 roundings at most on any path; 16 leaves room
+    if (std::fabs(s) > bound && bound > detail::kTiny) return s > 0 ? 1 : -1;
+    return exact();
+  }
+}
+
+// v / |v| (v != 0; a float v whose square underflows gives Inf or NaN components: a float failure
+// the bench counts, never masked).
+template <class Num> Vec3<Num> unit(const Vec3<Num>& v) { return Num(Num(1) / num::sqrt_of(dot(v, v))) * v; }
+
+// The frame of raw N, L, E (non-zero), with its steps on listing L (which includes
+// SW_LIGHTING_FRAME_LINES). `given`, if set, holds the decisions made beforehand on the exact input
+// (the runtime does that, so that every mode takes the reference's branches even when rounding the
+// input to float changes a sign); else they are made here, exactly on N, L, E as given.
+struct FrameSigns {
+  bool lit, seen, mirror;
+};
+template <class Num> FrameSigns frame_signs(const Vec3<Num>& N, const Vec3<Num>& L, const Vec3<Num>& E) {
+  return {sign_dot(N, L) > 0, sign_dot(N, E) > 0, sign_mirror(N, L, E) > 0};
+}
+
+template <class L, NumberType Num, StepProbe Probe>
+Frame<Num> shading_frame(const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num>& E, Probe& probe,
+                         const std::optional<FrameSigns>& given = std::nullopt) {
+  Frame<Num> f;
+  f.n = unit(N), f.l = unit(Lv), f.e = unit(E);
+  if constexpr (Probe::on) {
+    const Vec3<Num> o{};
+    probe.step(L::normalise, StepKind::init).vec("n", f.n).vec("l", f.l).vec("e", f.e)
+        .segment(o, f.n).label("n").keep().segment(o, f.l).label("l").keep().segment(o, f.e).label("e").keep();
+  }
+  const FrameSigns s = given ? *given : frame_signs(N, Lv, E);
+  f.lit = s.lit, f.seen = s.seen, f.mirror = s.mirror;
+  f.nl = dot(f.n, f.l), f.ne = dot(f.n, f.e);
+  if constexpr (Probe::on) probe.step(L::horizon, StepKind::decide).idx("lit", f.lit).idx("seen", f.seen).num("nl", f.nl).num("ne", f.ne);
+  return f;
+}
+
+// h = (l + e)/|l + e|. Defined whenever lit and seen: n.l > 0 and n.e > 0 rule out l = -e.
+template <class Num> Vec3<Num> half_vector(const Frame<Num>& f) { return unit(Vec3<Num>(f.l + f.e)); }
+// r = 2 (n.l) n - l: the mirror direction of l about n (unit when n and l are).
+template <class Num> Vec3<Num> mirror_of(const Frame<Num>& f) { return Num(Num(2) * f.nl) * f.n - f.l; }
+
+// Runs a model's term on the frame: 0 below the horizon (the `below` step), else term().
+template <class L, class Num, class Probe, class Term> Num frame_term(const Frame<Num>& f, Probe& probe, Term&& term) {
+  if (!(f.lit && f.seen)) {
+    if constexpr (Probe::on) probe.step(L::below, StepKind::done).num("term", Num(0));
+    return Num(0);
+  }
+  return term();
+}
+
+}  // namespace sw::lighting

@@ -1,0 +1,167 @@
+#include "lighting/lighting_input.hpp"
+#include <cmath>
+
+namespace sw::lighting_io {
+
+using namespace sw::lighting;
+
+Vec3<Rational> direction3(const Json& obj, const char* key, const std::string& what) {
+  const Json& v = require(obj, key, what);
+  const std::string w = what + "." + key;
+  if (!v.is_array() || v.size() != 3) throw InputError(w + ": expected an array of 3 numbers");
+  Vec3<Rational> p;
+  for (int k = 0; k < 3; ++k) {
+    const std::string wk = w + "[" + std::to_string(k) + "]";
+    p[k] = parse_rational(v[k], wk);
+    check_bound(p[k], kCoordBound, wk);
+  }
+  if (sgn(p.x) == 0 && sgn(p.y) == 0 && sgn(p.z) == 0) throw InputError(w + ": zero-length direction");
+  return p;
+}
+
+Rational number_in(const Json& obj, const char* key, const Rational& lo, const Rational& hi, bool lo_open, const std::string& what) {
+  const std::string w = what + "." + key;
+  const Rational x = parse_rational(require(obj, key, what), w);
+  check_digits(x, w);
+  if (x < lo || x > hi || (lo_open && x == lo))
+    throw InputError(w + ": " + x.get_str() + " is outside " + (lo_open ? "(" : "[") + lo.get_str() + ", " + hi.get_str() + "]");
+  return x;
+}
+
+DiffuseModel parse_diffuse(const Json& v, const std::string& what) {
+  if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    if (s == "lambert") return DiffuseModel::lambert;
+    if (s == "minnaert") return DiffuseModel::minnaert;
+    if (s == "oren-nayar") return DiffuseModel::oren_nayar;
+    throw InputError(what + ": unknown diffuse model '" + s + "' (lambert, minnaert, oren-nayar)");
+  }
+  throw InputError(what + ": expected \"lambert\", \"minnaert\" or \"oren-nayar\"");
+}
+
+Fresnel parse_fresnel(const Json& v, const std::string& what) {
+  if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    if (s == "exact") return Fresnel::exact;
+    if (s == "schlick") return Fresnel::schlick;
+    if (s == "one") return Fresnel::one;
+    throw InputError(what + ": unknown Fresnel term '" + s + "' (exact, schlick, one)");
+  }
+  throw InputError(what + ": expected \"exact\", \"schlick\" or \"one\"");
+}
+
+namespace {
+
+const Rational kZero(0), kOne(1), kMaxShininess(1000000), kMaxM(100), kMaxIor(100);
+
+void diffuse_params(DiffuseModel m, const Json& j, ModelParams<Rational>& p) {
+  if (m == DiffuseModel::minnaert) p.minnaert_k = number_in(j, "k", kZero, kOne, false, "input");
+  if (m == DiffuseModel::oren_nayar) p.sigma = number_in(j, "sigma", kZero, kOne, false, "input");
+}
+
+}  // namespace
+
+ModelInput parse_model_input(std::string_view id, const Json& j) {
+  if (!j.is_object()) throw InputError("input: expected an object");
+  ModelInput in;
+  auto keys = [&](std::initializer_list<const char*> extra, std::initializer_list<const char*> optional = {}) {
+    std::vector<const char*> all = {"n", "l", "e"};
+    all.insert(all.end(), extra.begin(), extra.end());
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      bool known = false;
+      for (const char* k : all) known = known || it.key() == k;
+      for (const char* k : optional) known = known || it.key() == k;
+      if (!known) throw InputError("input: unknown field \"" + it.key() + "\" for " + std::string(id));
+    }
+    for (const char* k : all) (void)require(j, k, "input");
+  };
+  auto& c = in.choice;
+  if (id == "lambert") {
+    keys({});
+  } else if (id == "minnaert") {
+    keys({"k"});
+    c.diffuse = DiffuseModel::minnaert;
+  } else if (id == "oren-nayar") {
+    keys({"sigma"});
+    c.diffuse = DiffuseModel::oren_nayar;
+  } else if (id == "toon") {
+    c.diffuse = parse_diffuse(require(j, "diffuse", "input"), "input.diffuse");
+    if (c.diffuse == DiffuseModel::minnaert) keys({"diffuse", "cutoff", "k"});
+    else if (c.diffuse == DiffuseModel::oren_nayar) keys({"diffuse", "cutoff", "sigma"});
+    else keys({"diffuse", "cutoff"});
+    in.p.toon = number_in(j, "cutoff", kZero, kOne, false, "input");
+  } else if (id == "phong" || id == "blinn-phong") {
+    keys({"shininess"});
+    c.specular = true;
+    c.spec = id == "phong" ? SpecularModel::phong : SpecularModel::blinn_phong;
+    in.p.shininess = number_in(j, "shininess", kZero, kMaxShininess, false, "input");
+  } else if (id == "gaussian" || id == "beckmann") {
+    keys({"m"});
+    c.specular = true;
+    c.spec = id == "gaussian" ? SpecularModel::gaussian : SpecularModel::beckmann;
+  } else if (id == "cook-torrance") {
+    keys({"m", "ior", "fresnel"}, {"shadowing"});
+    c.specular = true;
+    c.spec = SpecularModel::cook_torrance;
+    in.p.ior = number_in(j, "ior", kOne, kMaxIor, false, "input");
+    in.p.fresnel = parse_fresnel(j["fresnel"], "input.fresnel");
+    if (j.contains("shadowing")) {
+      if (!j["shadowing"].is_boolean()) throw InputError("input.shadowing: expected true or false");
+      in.p.shadowing = j["shadowing"].get<bool>();
+    }
+  } else {
+    throw InputError("input: unknown reflection model '" + std::string(id) + "'");
+  }
+  if (!c.specular) diffuse_params(c.diffuse, j, in.p);
+  if (c.spec == SpecularModel::gaussian || c.spec == SpecularModel::beckmann || c.spec == SpecularModel::cook_torrance)
+    in.p.m = number_in(j, "m", kZero, kMaxM, true, "input");
+  in.n = direction3(j, "n", "input");
+  in.l = direction3(j, "l", "input");
+  in.e = direction3(j, "e", "input");
+  decide(in);
+  return in;
+}
+
+void decide(ModelInput& in) {
+  in.signs = frame_signs(in.n, in.l, in.e);
+  in.p.toon_above.reset();
+  if (!in.p.toon || !(in.signs.lit && in.signs.seen)) return;
+  const Rational& c = *in.p.toon;
+  const bool lambert_like = in.choice.diffuse == DiffuseModel::lambert || (in.choice.diffuse == DiffuseModel::minnaert && in.p.minnaert_k == 1) ||
+                            (in.choice.diffuse == DiffuseModel::oren_nayar && sgn(in.p.sigma) == 0);
+  if (lambert_like) {  // n.l >= c  <=>  (N.L)^2 >= c^2 (N.N)(L.L), given N.L > 0 and c >= 0
+    const Rational nl = dot(in.n, in.l);
+    in.p.toon_above = nl * nl >= c * c * dot(in.n, in.n) * dot(in.l, in.l);
+    return;
+  }
+  NoProbe none;
+  const Frame<Rational> f = shading_frame<Toon>(in.n, in.l, in.e, none, in.signs);
+  in.p.toon_above = !(diffuse_nested(in.choice.diffuse, f, in.p, none) < c);
+}
+
+Json to_json(const ModelInput& in) {
+  auto v = [](const Vec3<Rational>& x) { return Json::array({x.x.get_str(), x.y.get_str(), x.z.get_str()}); };
+  Json j = {{"n", v(in.n)}, {"l", v(in.l)}, {"e", v(in.e)}};
+  const auto& p = in.p;
+  if (in.choice.specular) {
+    switch (in.choice.spec) {
+      case SpecularModel::phong:
+      case SpecularModel::blinn_phong: j["shininess"] = p.shininess.get_str(); break;
+      case SpecularModel::cook_torrance:
+        j["ior"] = p.ior.get_str();
+        j["fresnel"] = p.fresnel == Fresnel::exact ? "exact" : p.fresnel == Fresnel::schlick ? "schlick" : "one";
+        if (!p.shadowing) j["shadowing"] = false;
+        [[fallthrough]];
+      case SpecularModel::gaussian:
+      case SpecularModel::beckmann: j["m"] = p.m.get_str(); break;
+      case SpecularModel::none: break;
+    }
+    return j;
+  }
+  if (p.toon) j["diffuse"] = std::string(model_name(in.choice.diffuse)), j["cutoff"] = p.toon->get_str();
+  if (in.choice.diffuse == DiffuseModel::minnaert) j["k"] = p.minnaert_k.get_str();
+  if (in.choice.diffuse == DiffuseModel::oren_nayar) j["sigma"] = p.sigma.get_str();
+  return j;
+}
+
+}  // namespace sw::lighting_io

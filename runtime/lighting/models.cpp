@@ -1,0 +1,271 @@
+// The reflection models one light at a time: lambert, minnaert, oren-nayar, toon, phong,
+// blinn-phong, gaussian, beckmann, cook-torrance, in float, double and reference (Rational with
+// sqrt, pow, exp, acos in 300-bit MPFR). The decisions (lit, seen, the mirror side, the toon cut)
+// are made once on the exact input, so every mode takes the reference's branches and differs only
+// in its values. The oracle is oracle/lighting_oracle.cpp (400-bit MPFR from the papers' angle
+// formulas). A float result that is NaN or infinite, negative, or above 1 for a model whose exact
+// term never is, is a failure: shown in the result and counted as a bench mismatch.
+// Semantics: docs/lighting/semantics.md; accuracy: docs/lighting/accuracy.md.
+#include <cmath>
+#include <memory>
+#include <random>
+#include <mpfr.h>
+#include "adapter.hpp"
+#include "lighting/lighting_input.hpp"
+#include "lighting/models.hpp"
+#include "lighting_oracle.hpp"
+
+namespace sw {
+namespace {
+
+using lighting_io::ModelInput;
+using namespace sw::lighting;
+
+enum class Failure : std::uint8_t { none, not_finite, negative, above_one };
+constexpr std::string_view kFailureNames[] = {"none", "nan-or-inf", "negative", "above-1"};
+
+struct ModelOutput {
+  bool lit = false, seen = false;
+  Failure failure = Failure::none;
+  int bits = 53;
+  double value = 0;
+  Vec3<double> n, l, e;  // the unit frame as the mode computed it
+  std::shared_ptr<const Rational> ref;  // the value itself, in reference mode and from the oracle
+  friend bool operator==(const ModelOutput& a, const ModelOutput& b) {
+    return a.lit == b.lit && a.seen == b.seen && a.failure == b.failure;
+  }
+};
+
+// The models whose exact term lies in [0, 1] (a rounded value above 1 is an energy gain).
+bool bounded_by_one(const ModelChoice& c) {
+  if (!c.specular) return c.diffuse == DiffuseModel::lambert;
+  return c.spec == SpecularModel::phong || c.spec == SpecularModel::blinn_phong || c.spec == SpecularModel::gaussian;
+}
+
+template <class Num> ModelParams<Num> params_as(const ModelParams<Rational>& q) {
+  auto f = [](const Rational& x) { return num::from_rational<Num>(x); };
+  ModelParams<Num> p;
+  p.minnaert_k = f(q.minnaert_k), p.sigma = f(q.sigma), p.shininess = f(q.shininess), p.m = f(q.m), p.ior = f(q.ior);
+  if (q.toon) p.toon = f(*q.toon);
+  p.toon_above = q.toon_above, p.fresnel = q.fresnel, p.shadowing = q.shadowing;
+  return p;
+}
+
+template <class Num> struct Prepared {
+  ModelChoice choice;
+  Vec3<Num> n, l, e;
+  ModelParams<Num> p;
+  FrameSigns signs;
+  bool bounded;
+};
+
+// |got - ref| in units in the last place of the mode at ref (ref's exponent, at least the mode's
+// smallest normal one); 0 where both are 0; in ulps of 1 where only ref is 0 (a term that should
+// be exactly 0, e.g. Fresnel at ior 1, but is a rounding residue).
+double ulps(const Rational& got, const Rational& ref, int bits) {
+  const Rational err = abs(Rational(got - ref));
+  if (sgn(err) == 0) return 0;
+  long exp = sgn(ref) == 0 ? 1 : bits == 24 ? -125 : -1021;
+  if (sgn(ref) != 0) {
+    mpfr_t m;
+    mpfr_init2(m, 64);
+    mpfr_set_q(m, ref.get_mpq_t(), MPFR_RNDN);
+    exp = std::max<long>(exp, mpfr_get_exp(m));  // ref in [2^(exp-1), 2^exp)
+    mpfr_clear(m);
+  }
+  mpfr_t u;
+  mpfr_init2(u, 64);
+  mpfr_set_q(u, err.get_mpq_t(), MPFR_RNDN);
+  mpfr_mul_2si(u, u, bits - exp, MPFR_RNDN);  // err / 2^(exp - bits)
+  const double r = mpfr_get_d(u, MPFR_RNDN);
+  mpfr_clear(u);
+  return r;
+}
+
+Vec3<double> vec_of(const lighting_oracle::OracleTerm& o, const char* k) {
+  auto at = [&](const char* c) { return o.named.at(std::string(k) + c).get_d(); };
+  return {at(".x"), at(".y"), at(".z")};
+}
+
+template <class A> struct ModelSpec {
+  using Algo = A;
+  static constexpr std::array hooks{Hook::error, Hook::handles};
+  using Input = ModelInput;
+  using Output = ModelOutput;
+  static constexpr std::string_view family = "lighting";
+  static constexpr std::array views{View::orbit3d};
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
+  static const std::string example;
+  static Input parse(const Json& j, Numeric) { return lighting_io::parse_model_input(Algo::id, j); }
+  static std::vector<Handle> handles() { return {{"/l", Handle::Kind::direction3, 0, "l"}, {"/e", Handle::Kind::direction3, 0, "e"}}; }
+  template <class Num> static Prepared<Num> prepare(const Input& in) {
+    return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, bounded_by_one(in.choice)};
+  }
+  template <class Num, class Probe> static Output compute(const Prepared<Num>& x, Probe& probe) {
+    Frame<Num> f;
+    const Num v = evaluate<Algo>(x.choice, x.n, x.l, x.e, x.p, probe, x.signs, &f);
+    Output o;
+    o.lit = f.lit, o.seen = f.seen;
+    auto d3 = [](const Vec3<Num>& a) { return Vec3<double>{num::to_double(a.x), num::to_double(a.y), num::to_double(a.z)}; };
+    o.n = d3(f.n), o.l = d3(f.l), o.e = d3(f.e);
+    if constexpr (std::is_same_v<Num, Rational>) {
+      o.bits = 300;
+      o.value = v.get_d();
+      o.ref = std::make_shared<const Rational>(v);
+      // The reference's own rounding (2^-300 in the unit vectors) may put a term of exactly 1 a hair
+      // above 1, or one of exactly 0 a hair below (Schlick's (1 - e.h)^5 at l = e, ior = 1): not failures.
+      const Rational hair = Rational(1) / Rational(mpz_class(1) << 250);
+      if (v < -hair) o.failure = Failure::negative;
+      else if (x.bounded && v > Rational(1) + hair) o.failure = Failure::above_one;
+    } else {
+      o.bits = std::is_same_v<Num, float> ? 24 : 53;
+      o.value = double(v);
+      // A frame that is not finite (a squared length underflowed to 0) is a failure even where the
+      // term came out finite: pow(Inf, -1) = 0 and pow(NaN, 0) = 1 hide it. Not for toon, whose 0 or
+      // 1 is the exact decision whatever the frame's values.
+      const bool frame_ok = x.p.toon || (std::isfinite(f.nl) && std::isfinite(f.ne) && std::isfinite(dot(f.l, f.e)));
+      if (!std::isfinite(v) || !frame_ok) o.failure = Failure::not_finite;
+      else if (v < Num(0)) o.failure = Failure::negative;
+      else if (x.bounded && v > Num(1)) o.failure = Failure::above_one;
+    }
+    return o;
+  }
+  static Json to_json(const Output& o) {
+    Json j = {{"value", o.value}, {"lit", o.lit}, {"seen", o.seen}};
+    auto dot3 = [](const Vec3<double>& a, const Vec3<double>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+    // The breakdown, from the mode's unit frame (in double): the cosines and the two highlight
+    // cosines, where the frame is lit and seen.
+    j["nl"] = dot3(o.n, o.l), j["ne"] = dot3(o.n, o.e), j["le"] = dot3(o.l, o.e);
+    if (o.lit && o.seen) {
+      const Vec3<double> h = o.l + o.e;
+      j["nh"] = dot3(o.n, h) / std::sqrt(dot3(h, h));
+      j["re"] = 2 * dot3(o.n, o.l) * dot3(o.n, o.e) - dot3(o.l, o.e);
+    }
+    if (o.failure != Failure::none) j["failure"] = kFailureNames[static_cast<int>(o.failure)];
+    for (auto it = j.begin(); it != j.end(); ++it)  // a NaN is not JSON: shown as text
+      if (it->is_number_float() && !std::isfinite(it->get<double>())) *it = std::to_string(it->get<double>());
+    return j;
+  }
+  static std::size_t ops(const Output&) { return 1; }
+  static Output oracle(const Input& in) {
+    const auto t = lighting_oracle::term(Algo::id, in.choice.diffuse, in.n, in.l, in.e, in.p);
+    Output o;
+    o.lit = t.lit, o.seen = t.seen, o.bits = 400;
+    o.value = t.value.get_d();
+    o.ref = std::make_shared<const Rational>(t.value);
+    o.n = vec_of(t, "n"), o.l = vec_of(t, "l"), o.e = vec_of(t, "e");
+    return o;
+  }
+  static double error(const Output& got, const Output& ref) {
+    if (!ref.ref) return 0;
+    if (got.ref) return ulps(*got.ref, *ref.ref, got.bits);  // reference mode: its own value, not the double
+    if (got.failure != Failure::none) return 0;              // a failure: counted as a mismatch instead
+    return ulps(num::to_rational(got.value), *ref.ref, got.bits);
+  }
+  static std::vector<BenchSet<Input>> bench_sets();
+};
+
+// The examples (the first listed parameters are the model's own).
+template <> const std::string ModelSpec<Lambert>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2]})";
+template <> const std::string ModelSpec<Minnaert>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2],"k":0.5})";
+template <> const std::string ModelSpec<OrenNayar>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[1,1,2],"sigma":0.5})";
+template <> const std::string ModelSpec<Toon>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2],"diffuse":"lambert","cutoff":0.5})";
+template <> const std::string ModelSpec<Phong>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"shininess":20})";
+template <> const std::string ModelSpec<BlinnPhong>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"shininess":20})";
+template <> const std::string ModelSpec<Gaussian>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})";
+template <> const std::string ModelSpec<Beckmann>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})";
+template <> const std::string ModelSpec<CookTorrance>::example =
+    R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3,"ior":1.5,"fresnel":"exact"})";
+
+// Seeded sets: "random" frames (directions uniform on the sphere, lengths from 1/8 to 8, the light
+// and the eye in the normal's hemisphere nine times in ten; parameters uniform in their ranges),
+// and "hard": grazing light and eye (n.l, n.e = 0, 1e-3 ... 1e-12), l = e, l = -e, huge
+// exponents (10^4), sigma = 1, k = 0, lengths from 1e-30 to 1e14, denormal components. Coordinates are
+// floats, so float mode reads the input exactly (except the denormal cases, beyond float).
+Json rand_params(std::string_view id, std::mt19937_64& rng, bool hard) {
+  auto u = [&](double lo, double hi) { return double(float(std::uniform_real_distribution<double>(lo, hi)(rng))); };
+  Json j = Json::object();
+  auto pick = [&](std::initializer_list<double> xs) { return *(xs.begin() + rng() % xs.size()); };
+  if (id == "minnaert") j["k"] = hard ? pick({0, 1, 0.001, 0.999}) : u(0, 1);
+  if (id == "oren-nayar") j["sigma"] = hard ? pick({0, 1, 0.999}) : u(0, 1);
+  if (id == "toon") {
+    const int d = int(rng() % 3);
+    j["diffuse"] = std::array{"lambert", "minnaert", "oren-nayar"}[d];
+    if (d == 1) j["k"] = u(0, 1);
+    if (d == 2) j["sigma"] = u(0, 1);
+    j["cutoff"] = u(0, 1);
+  }
+  if (id == "phong" || id == "blinn-phong") j["shininess"] = hard ? pick({10000, 1000, 0, 1}) : u(1, 200);
+  if (id == "gaussian" || id == "beckmann" || id == "cook-torrance") j["m"] = hard ? pick({0.001, 0.01, 1, 5}) : u(0.05, 1);
+  if (id == "cook-torrance") j["ior"] = hard ? pick({1, 1.0001, 50}) : u(1, 3), j["fresnel"] = rng() % 2 ? "exact" : "schlick";
+  return j;
+}
+
+std::vector<BenchSet<ModelInput>> model_bench_sets(std::string_view id) {
+  std::mt19937_64 rng(4242 + id.size());
+  std::normal_distribution<double> gauss;
+  auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  auto fl = [](double x) { return double(float(x)); };
+  auto dir = [&](double len) {
+    Vec3<double> v{gauss(rng), gauss(rng), gauss(rng)};
+    const double s = len / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    return Vec3<double>{fl(s * v.x), fl(s * v.y), fl(s * v.z)};
+  };
+  auto js = [](const Vec3<double>& v) { return Json::array({v.x, v.y, v.z}); };
+  auto make = [&](Json j, const Vec3<double>& n, const Vec3<double>& l, const Vec3<double>& e) {
+    j["n"] = js(n), j["l"] = js(l), j["e"] = js(e);
+    return lighting_io::parse_model_input(id, j);
+  };
+  auto flip_into = [](Vec3<double> v, const Vec3<double>& n, bool into) {
+    const double d = v.x * n.x + v.y * n.y + v.z * n.z;
+    if ((d < 0) == into) v = Vec3<double>{-v.x, -v.y, -v.z};
+    return v;
+  };
+  BenchSet<ModelInput> random{"random", {}}, hard{"hard", {}};
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3<double> n = dir(std::exp2(u(-3, 3)));
+    const Vec3<double> l = flip_into(dir(std::exp2(u(-3, 3))), n, rng() % 10 != 0), e = flip_into(dir(std::exp2(u(-3, 3))), n, rng() % 10 != 0);
+    random.inputs.push_back(make(rand_params(id, rng, false), n, l, e));
+  }
+  // Grazing: the light (or the eye) at angle eps above the tangent plane of n = z, eps = 0 exactly
+  // some of the time; l = e; l = -e; scaled and denormal vectors.
+  for (int k = 0; k < 1000; ++k) {
+    const double eps = std::array{0.0, 1e-3, 1e-6, 1e-9, 1e-12}[rng() % 5];
+    const double phi = u(0, 6.283185307179586), phi2 = u(0, 6.283185307179586);
+    Vec3<double> n{0, 0, 1}, l{fl(std::cos(phi)), fl(std::sin(phi)), fl(eps)}, e{fl(std::cos(phi2)), fl(std::sin(phi2)), fl(u(0.01, 1))};
+    switch (k % 6) {
+      case 0: break;                                   // grazing light
+      case 1: std::swap(l, e); break;                  // grazing eye
+      case 2: e = {fl(-l.x), fl(-l.y), fl(eps)}; break;  // both grazing, l and e nearly opposite
+      case 3: e = l = {l.x, l.y, fl(u(0.01, 1))}; break;  // l = e
+      case 4: e = {fl(-l.x), fl(-l.y), fl(-l.z)}; break;  // l = -e (below the horizon: h undefined)
+      case 5: {                                        // lengths from 1e-30 to 1e14, or denormal in double
+        const double s = k % 12 == 5 ? 1e-310 : std::pow(10.0, double(int(rng() % 45) - 30));
+        n = dir(1), l = flip_into(dir(1), n, true), e = flip_into(dir(1), n, true);
+        n = {n.x * s, n.y * s, n.z * s};
+        if (k % 12 == 11) l = {l.x * 1e12, l.y * 1e12, l.z * 1e12};
+        break;
+      }
+    }
+    hard.inputs.push_back(make(rand_params(id, rng, true), n, l, e));
+  }
+  return {random, hard};
+}
+
+template <class A> std::vector<BenchSet<ModelInput>> ModelSpec<A>::bench_sets() { return model_bench_sets(A::id); }
+
+}  // namespace
+
+void register_lighting_models(std::vector<Algorithm>& out) {
+  out.push_back(make_algorithm<ModelSpec<Lambert>>());
+  out.push_back(make_algorithm<ModelSpec<Minnaert>>());
+  out.push_back(make_algorithm<ModelSpec<OrenNayar>>());
+  out.push_back(make_algorithm<ModelSpec<Toon>>());
+  out.push_back(make_algorithm<ModelSpec<Phong>>());
+  out.push_back(make_algorithm<ModelSpec<BlinnPhong>>());
+  out.push_back(make_algorithm<ModelSpec<Gaussian>>());
+  out.push_back(make_algorithm<ModelSpec<Beckmann>>());
+  out.push_back(make_algorithm<ModelSpec<CookTorrance>>());
+}
+
+}  // namespace sw
