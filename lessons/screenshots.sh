@@ -26,3 +26,4 @@ shot 15-affine-checkerboard       # the same floor without the divide: equal row
 shot 16-kd-sah                  # node 2's x cut at 8: an empty side is cheaper than halving
 shot 17-bsp-painter             # half painted, back to front
 shot 18-kd-ray-mesh             # (needs out/meshes) the hit beyond the leaf, on the tree
+shot 19-gouraud-phong           # the largest difference: Phong's highlight that Gouraud misses

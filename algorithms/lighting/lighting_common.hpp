@@ -92,7 +92,8 @@ Frame<Num> shading_frame(const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num
   if constexpr (Probe::on) {
     const Vec3<Num> o{};
     probe.step(L::normalise, StepKind::init).vec("n", f.n).vec("l", f.l).vec("e", f.e)
-        .segment(o, f.n).label("n").keep().segment(o, f.l).label("l").keep().segment(o, f.e).label("e").keep();
+        .segment(o, f.n).label("n").keep().segment(o, f.l).label("l").keep().segment(o, f.e).label("e").keep()
+        .plane(o, f.n).keep();  // the surface's tangent plane, for the 3D view
   }
   const FrameSigns s = given ? *given : frame_signs(N, Lv, E);
   f.lit = s.lit, f.seen = s.seen, f.mirror = s.mirror;

@@ -32,6 +32,13 @@ void check_step(const lighting_oracle::OracleTerm& o, StepValues& sv, StepGeomet
   for (GeoItem& item : g.items) {
     item.checked = true;
     INFO("geometry " << item.label);
+    if (item.kind == GeoKind::plane) {  // the tangent plane at the point: through the origin, normal n
+      CHECK(item.life == "keep");
+      REQUIRE(item.values.size() == 6);
+      for (int k = 0; k < 3; ++k) CHECK(sgn(item.values[k]) == 0);
+      for (int k = 0; k < 3; ++k) CHECK(close(item.values[3 + k], o.named.at(std::string("n.") + "xyz"[k])));
+      continue;
+    }
     CHECK(item.kind == GeoKind::segment3);
     CHECK(item.life == "keep");
     REQUIRE(item.values.size() == 6);
