@@ -27,3 +27,4 @@ shot 16-kd-sah                  # node 2's x cut at 8: an empty side is cheaper 
 shot 17-bsp-painter             # half painted, back to front
 shot 18-kd-ray-mesh             # (needs out/meshes) the hit beyond the leaf, on the tree
 shot 19-gouraud-phong           # the largest difference: Phong's highlight that Gouraud misses
+shot 20-minnaert-moon           # the full-moon disc, nearly flat (the Sweep tab)

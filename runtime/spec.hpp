@@ -28,8 +28,9 @@ enum class Hook : std::uint8_t {
   sweep_caption,   // static constexpr std::string_view sweep_caption
   sweep_input,     // static Json sweep_input(Json, const Input&, const SweepGrid&, int, int)
   outline,         // static std::vector<Polyline2> outline(const Input&, const Rect2&, double cell)
+  sweep_shaded,    // static constexpr bool sweep_shaded = true: the sweep's values are intensities in [0, 1]
 };
-inline constexpr std::size_t kHookCount = 13;
+inline constexpr std::size_t kHookCount = 14;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -59,6 +60,7 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::sweep_caption: return requires { { S::sweep_caption } -> std::convertible_to<std::string_view>; };
     case Hook::sweep_input: return requires(const In& in, const SweepGrid& g) { { S::sweep_input(Json(), in, g, 0, 0) } -> std::convertible_to<Json>; };
     case Hook::outline: return requires(const In& in, const Rect2& r) { S::outline(in, r, 1.0); };
+    case Hook::sweep_shaded: return requires { { S::sweep_shaded } -> std::convertible_to<bool>; };
   }
   return false;
 }

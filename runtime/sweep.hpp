@@ -7,6 +7,7 @@
 //   static std::optional<std::array<double, 2>> sweep_marker(const Input&);
 //   static Json sweep_input(Json input, const Input&, const SweepGrid&, int i, int j);  // sample (i, j)
 //   static constexpr std::string_view sweep_caption;
+//   static constexpr bool sweep_shaded = true;  // values are intensities in [0, 1]
 //   static std::vector<Polyline2> outline(const Input&, const Rect2& window, double cell);
 #pragma once
 #include <limits>
@@ -103,6 +104,7 @@ template <class Spec> void fill_view_hooks(Algorithm& a) {
     if constexpr (names_hook<Spec>(Hook::sweep_marker))
       a.sweep.marker = [](const Json& j) { return Spec::sweep_marker(Spec::parse(j, Numeric::exact)); };
     if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
+    if constexpr (names_hook<Spec>(Hook::sweep_shaded)) a.sweep.shaded = Spec::sweep_shaded;
     if constexpr (names_hook<Spec>(Hook::sweep_input))
       a.sweep.sample = [](const Json& j, const SweepGrid& g, int x, int y) { return Spec::sweep_input(j, Spec::parse(j, Numeric::exact), g, x, y); };
   }

@@ -55,6 +55,9 @@ struct Sweep {
   // Sample (i, j)'s input as JSON, as the sweep ran it (the app opens it on a click).
   std::function<Json(const Json& input, const SweepGrid&, int i, int j)> sample;
   std::string_view caption;  // what a sample is, for the view's legend
+  // The values are intensities in [0, 1] (a shaded picture), not distances along a ray: the view
+  // shows them grey and counts a difference over 1/255 from the reference as a disagreement.
+  bool shaded = false;
   explicit operator bool() const { return bool(run); }
 };
 

@@ -124,3 +124,34 @@ TEST_CASE("view hooks: declared views and table lines", "[views]") {
   for (std::size_t k = 0; k < kViewNames.size(); ++k) CHECK(parse_view(kViewNames[k]) == static_cast<View>(k));
   CHECK_FALSE(parse_view("forest"));
 }
+
+TEST_CASE("view hooks: every sample of a shading sweep is the model on the sphere's normal there, as the CLI computes it", "[views][sweep]") {
+  for (const char* id : {"lambert", "minnaert", "oren-nayar", "toon", "phong", "blinn-phong", "gaussian", "beckmann", "cook-torrance"}) {
+    const Algorithm& alg = find_algorithm(id);
+    REQUIRE(alg.sweep);
+    REQUIRE(alg.sweep.shaded);
+    const Json input = parse_json_text(alg.example, "example");
+    for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::reference}) {
+      SweepGrid g{9, 7, 0.05, -0.1, 0.25, 0.3, n == Numeric::f32 ? Numeric::f32 : Numeric::f64};
+      std::vector<float> out;
+      alg.sweep.run(input, n, g, out);
+      REQUIRE(out.size() == 63);
+      std::size_t on = 0;
+      for (int j = 0; j < g.h; ++j)
+        for (int i = 0; i < g.w; ++i) {
+          const float v = out[std::size_t(j) * g.w + i];
+          const double x = g.x(i), y = g.y(j);
+          INFO(id << " " << numeric_name(n) << " sample " << i << ", " << j);
+          if (x * x + y * y >= 1) {  // off the sphere: no value
+            CHECK(std::isnan(v));
+            continue;
+          }
+          ++on;
+          const Json sample = alg.sweep.sample(input, g, i, j);
+          CHECK(sample["n"][2].get<double>() > 0);
+          CHECK(v == static_cast<float>(alg.run(sample, n)["value"].get<double>()));
+        }
+      CHECK(on > 20);
+    }
+  }
+}

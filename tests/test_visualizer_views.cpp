@@ -8,6 +8,7 @@
 #include "cli_harness.hpp"
 #include "headless.hpp"
 #include "image_view.hpp"
+#include "lighting_oracle.hpp"
 #include "outline_layer.hpp"
 #include "plot_view.hpp"
 #include "rays_oracle.hpp"
@@ -179,6 +180,37 @@ TEST_CASE("views plot: a float difference table's drift against exact, plotted a
   CHECK(app.step() == t.rows[target]);
   CHECK(target >= 38);
   CHECK(target <= 40);
+}
+
+TEST_CASE("views image: a shaded float sweep differs from reference by over 1/255 exactly where the MPFR oracle says", "[visualizer][views]") {
+  // Blinn-Phong with a huge exponent: float's c = n.h, raised to 2 * 10^5, loses the highlight's value.
+  const Algorithm& alg = find_algorithm("blinn-phong");
+  const Json input = parse_json_text(R"({"n":[0,0,1],"l":[1,0.5,2],"e":[-0.5,0.25,2],"shininess":200000})", "t");
+  const auto m = record_model(alg, input, Numeric::f32);
+  const SweepGrid g{61, 61, 0.1042, 0.1804, 0.0002, 0.0002, Numeric::f32};  // around the highlight, n = h
+  const SweepImage img = sweep_image(*m, g);
+  REQUIRE(img.shaded);
+  REQUIRE(img.reference == Numeric::reference);
+  REQUIRE(img.samples() == 61u * 61u);
+  lighting::ModelParams<Rational> p;
+  p.shininess = 200000;
+  auto vec = [](const Json& j) { return Vec3<Rational>{parse_rational(j[0], "v"), parse_rational(j[1], "v"), parse_rational(j[2], "v")}; };
+  std::size_t brighter = 0, darker = 0;
+  for (int j = 0; j < g.h; ++j)
+    for (int i = 0; i < g.w; ++i) {
+      const Json s = alg.sweep.sample(input, g, i, j);
+      const float ref = static_cast<float>(lighting_oracle::term("blinn-phong", lighting::DiffuseModel::lambert, vec(s["n"]), vec(input["l"]), vec(input["e"]), p).value.get_d());
+      const float flt = static_cast<float>(alg.run(s, Numeric::f32)["value"].get<double>());
+      const std::size_t k = std::size_t(j) * g.w + i;
+      INFO("sample (" << i << ", " << j << ")");
+      CHECK(std::fabs(img.exact[k] - ref) <= 1e-6f);
+      CHECK(img.mode[k] == flt);
+      const bool differs = std::fabs(flt - ref) > 1.f / 255;
+      brighter += differs && flt > ref, darker += differs && flt < ref;
+    }
+  CHECK(img.false_hits == brighter);
+  CHECK(img.missed == darker);
+  CHECK(brighter + darker >= 10);  // float's error shows across the highlight
 }
 
 TEST_CASE("views image: a float ray-triangle sweep disagrees with exact exactly where the CGAL oracle says", "[visualizer][views]") {

@@ -8,6 +8,7 @@ namespace sw::vis {
 namespace {
 
 constexpr std::size_t kRingedAtMost = 400;               // disagreements ringed so single ones show
+constexpr float kShadeTolerance = 1.f / 255;             // a shaded sample differs when it would show
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -17,27 +18,38 @@ std::uint32_t rgba(ImU32 c) { return c; }  // IM_COL32 is RGBA in memory order a
 
 }  // namespace
 
+int SweepImage::disagreement(std::size_t k) const {
+  const bool a = !std::isnan(mode[k]), e = !std::isnan(exact[k]);
+  if (a != e) return a ? 1 : -1;
+  if (!a || !shaded || std::fabs(mode[k] - exact[k]) <= kShadeTolerance) return 0;
+  return mode[k] > exact[k] ? 1 : -1;
+}
+
 SweepImage sweep_image(const TraceModel& m, SweepGrid grid) {
   SweepImage img;
   const Algorithm& alg = m.algorithm();
   grid.inputs = m.numeric() == Numeric::f32 ? Numeric::f32 : Numeric::f64;
   img.grid = grid;
+  img.shaded = alg.sweep.shaded;
+  const auto& ns = alg.numerics;
+  img.reference = std::find(ns.begin(), ns.end(), Numeric::exact) == ns.end() && std::find(ns.begin(), ns.end(), Numeric::reference) != ns.end()
+                      ? Numeric::reference : Numeric::exact;
   if (!alg.sweep) return img;
   auto t0 = std::chrono::steady_clock::now();
   alg.sweep.run(m.input(), m.numeric(), grid, img.mode);
   img.mode_ms = ms_since(t0);
-  if (m.numeric() == Numeric::exact) {
+  if (m.numeric() == img.reference) {
     img.exact = img.mode;
   } else {
     t0 = std::chrono::steady_clock::now();
-    alg.sweep.run(m.input(), Numeric::exact, grid, img.exact);
+    alg.sweep.run(m.input(), img.reference, grid, img.exact);
     img.exact_ms = ms_since(t0);
   }
   for (std::size_t k = 0; k < img.mode.size(); ++k) {
-    const bool a = !std::isnan(img.mode[k]), e = !std::isnan(img.exact[k]);
-    img.hits += e;
-    img.false_hits += a && !e;
-    img.missed += e && !a;
+    img.hits += !std::isnan(img.exact[k]);
+    const int d = img.disagreement(k);
+    img.false_hits += d > 0;
+    img.missed += d < 0;
   }
   return img;
 }
@@ -105,11 +117,14 @@ void ImageCanvas::upload() {
     if (!std::isnan(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   std::vector<std::uint32_t> px(image_.samples());
   for (std::size_t k = 0; k < px.size(); ++k) {
-    const bool a = !std::isnan(image_.mode[k]), e = !std::isnan(image_.exact[k]);
-    if (a != e) {
-      px[k] = rgba(a ? kSweepFalseHit : kSweepMissed);
+    const bool a = !std::isnan(image_.mode[k]);
+    if (const int d = image_.disagreement(k)) {
+      px[k] = rgba(d > 0 ? kSweepFalseHit : kSweepMissed);
     } else if (!a) {
       px[k] = rgba(kSweepMissBoth);
+    } else if (image_.shaded) {  // the intensity itself, grey
+      const int s = static_cast<int>(std::lround(255 * std::clamp(image_.exact[k], 0.f, 1.f)));
+      px[k] = rgba(IM_COL32(s, s, s, 255));
     } else {  // nearer is brighter
       const float u = hi > lo ? (image_.exact[k] - lo) / (hi - lo) : 0.f;
       const int s = static_cast<int>(225 - 120 * std::clamp(u, 0.f, 1.f));
@@ -163,10 +178,11 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
     for (int j = 0; j < grid.h && image_.disagreements(); ++j)
       for (int i = 0; i < grid.w; ++i) {
         const std::size_t k = std::size_t(j) * grid.w + i;
-        if (std::isnan(image_.mode[k]) == std::isnan(image_.exact[k])) continue;
+        const int d = image_.disagreement(k);
+        if (!d) continue;
         const auto r = sample_rect(i, j);
         const float rad = std::max(6.f, (r[2] - r[0]) * 1.5f);
-        dl->AddCircle(ImVec2((r[0] + r[2]) / 2, (r[1] + r[3]) / 2), rad, std::isnan(image_.mode[k]) ? kSweepMissed : kSweepFalseHit, 16, 1.5f);
+        dl->AddCircle(ImVec2((r[0] + r[2]) / 2, (r[1] + r[3]) / 2), rad, d < 0 ? kSweepMissed : kSweepFalseHit, 16, 1.5f);
       }
   // The input itself.
   if (in.model->algorithm().sweep.marker) {
@@ -179,19 +195,22 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
     }
   }
   // The count, and the legend.
-  const std::string mode(numeric_name(in.model->numeric()));
+  const std::string mode(numeric_name(in.model->numeric())), ref(numeric_name(image_.reference));
   const std::string caption(in.model->algorithm().sweep.caption);
+  const bool self = in.model->numeric() == image_.reference, shaded = image_.shaded;
   char lines[3][200];
   if (!error_.empty()) {
     std::snprintf(lines[0], sizeof lines[0], "sweep failed: %s", error_.c_str());
-  } else if (in.model->numeric() == Numeric::exact) {
-    std::snprintf(lines[0], sizeof lines[0], "exact: %zu of %zu hit", image_.hits, image_.samples());
+  } else if (self) {
+    std::snprintf(lines[0], sizeof lines[0], "%s: %zu of %zu %s", ref.c_str(), image_.hits, image_.samples(), shaded ? "shaded" : "hit");
   } else {
-    std::snprintf(lines[0], sizeof lines[0], "%s: %zu of %zu disagree with exact", mode.c_str(), image_.disagreements(), image_.samples());
+    std::snprintf(lines[0], sizeof lines[0], "%s: %zu of %zu %s %s", mode.c_str(), image_.disagreements(), image_.samples(),
+                  shaded ? "differ by more than 1/255 from" : "disagree with", ref.c_str());
   }
   std::snprintf(lines[1], sizeof lines[1], "%dx%d %s", grid.w, grid.h, caption.c_str());
-  if (in.model->numeric() == Numeric::exact) std::snprintf(lines[2], sizeof lines[2], "swept in %.1f ms", image_.mode_ms);
-  else std::snprintf(lines[2], sizeof lines[2], "%zu only %s hit, %zu only exact; %.1f + %.1f ms", image_.false_hits, mode.c_str(), image_.missed, image_.mode_ms, image_.exact_ms);
+  if (self) std::snprintf(lines[2], sizeof lines[2], "swept in %.1f ms", image_.mode_ms);
+  else if (shaded) std::snprintf(lines[2], sizeof lines[2], "%zu brighter, %zu darker in %s; %.1f + %.1f ms", image_.false_hits, image_.missed, mode.c_str(), image_.mode_ms, image_.exact_ms);
+  else std::snprintf(lines[2], sizeof lines[2], "%zu only %s hit, %zu only %s; %.1f + %.1f ms", image_.false_hits, mode.c_str(), image_.missed, ref.c_str(), image_.mode_ms, image_.exact_ms);
   float text_w = 0, line_h = ImGui::GetTextLineHeight();
   for (const auto& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l).x);
   dl->AddRectFilled(ImVec2(origin_.x + 4, origin_.y + 4), ImVec2(origin_.x + text_w + 14, origin_.y + 3 * line_h + 12), IM_COL32(0, 0, 0, 190), 3);
@@ -207,11 +226,14 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
     dl->AddText(ImVec2(lx + 17, ly), theme::kLabel, text);
     lx += 17 + ImGui::CalcTextSize(text).x + 16;
   };
-  key(IM_COL32(135, 180, 225, 255), "both hit");
-  key(kSweepMissBoth, "both miss");
-  if (in.model->numeric() != Numeric::exact) {
-    key(kSweepFalseHit, ("only " + mode).c_str());
-    key(kSweepMissed, "only exact");
+  if (shaded) {
+    key(IM_COL32(200, 200, 200, 255), "agree: the value, grey");
+    key(kSweepMissBoth, "no value");
+    if (!self) key(kSweepFalseHit, ("brighter in " + mode).c_str()), key(kSweepMissed, ("darker in " + mode).c_str());
+  } else {
+    key(IM_COL32(135, 180, 225, 255), "both hit");
+    key(kSweepMissBoth, "both miss");
+    if (!self) key(kSweepFalseHit, ("only " + mode).c_str()), key(kSweepMissed, ("only " + ref).c_str());
   }
   if ((hovered || ImGui::IsItemDeactivated()) && image_.samples()) {
     const ImGuiIO& io = ImGui::GetIO();

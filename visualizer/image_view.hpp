@@ -19,12 +19,16 @@ inline constexpr ImU32 kSweepMissed = IM_COL32(255, 200, 0, 255);    // exact ha
 struct SweepImage {
   SweepGrid grid;
   std::vector<float> mode, exact;        // per sample, row 0 on top; NaN: none (a miss)
+  Numeric reference = Numeric::exact;    // what `exact` was swept in: exact, else (transcendental) reference
+  bool shaded = false;                   // values are intensities (Sweep::shaded)
   std::size_t hits = 0;                  // samples exact says have a value
-  std::size_t false_hits = 0;            // the mode has a value, exact none
-  std::size_t missed = 0;                // exact has a value, the mode none
+  std::size_t false_hits = 0;            // the mode has a value, exact none; shaded: or brighter by > 1/255
+  std::size_t missed = 0;                // exact has a value, the mode none; shaded: or darker by > 1/255
   double mode_ms = 0, exact_ms = 0;      // how long each sweep took
   std::size_t samples() const { return mode.size(); }
   std::size_t disagreements() const { return false_hits + missed; }
+  // Sample k: +1 counted in false_hits, -1 in missed, 0 agreeing.
+  int disagreement(std::size_t k) const;
 };
 
 // Sweeps m's algorithm on m's input over `grid` in m's number type and exactly; the grid's

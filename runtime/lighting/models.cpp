@@ -25,6 +25,7 @@ enum class Failure : std::uint8_t { none, not_finite, negative, above_one };
 constexpr std::string_view kFailureNames[] = {"none", "nan-or-inf", "negative", "above-1"};
 
 struct ModelOutput {
+  bool outside = false;  // a sweep sample off the sphere: no value
   bool lit = false, seen = false;
   Failure failure = Failure::none;
   int bits = 53;
@@ -57,7 +58,19 @@ template <class Num> struct Prepared {
   ModelParams<Num> p;
   FrameSigns signs;
   bool bounded;
+  bool outside = false;  // a sweep sample off the sphere
 };
+
+// The image view's sweep: sample (i, j) of the grid is the point (x, y) of a unit sphere seen from
+// +z, whose normal (x, y, sqrt(1 - x^2 - y^2)) is computed in double and rounded to the grid's
+// inputs (so every mode shades the same normal); off the sphere: none.
+std::optional<Vec3<Rational>> sphere_normal(const SweepGrid& g, int i, int j) {
+  const double x = g.x(i), y = g.y(j), zz = 1 - x * x - y * y;
+  if (!(zz > 0)) return std::nullopt;
+  const double z = std::sqrt(zz);
+  auto in = [&](double v) { return num::to_rational(g.inputs == Numeric::f32 ? double(float(v)) : v); };
+  return Vec3<Rational>{in(x), in(y), in(z)};
+}
 
 // |got - ref| in units in the last place of the mode at ref (ref's exponent, at least the mode's
 // smallest normal one); 0 where both are 0; in ulps of 1 where only ref is 0 (a term that should
@@ -89,11 +102,11 @@ Vec3<double> vec_of(const lighting_oracle::OracleTerm& o, const char* k) {
 
 template <class A> struct ModelSpec {
   using Algo = A;
-  static constexpr std::array hooks{Hook::error, Hook::handles};
+  static constexpr std::array hooks{Hook::error, Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_shaded};
   using Input = ModelInput;
   using Output = ModelOutput;
   static constexpr std::string_view family = "lighting";
-  static constexpr std::array views{View::orbit3d};
+  static constexpr std::array views{View::orbit3d, View::image};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static const std::string example;
   static Input parse(const Json& j, Numeric) { return lighting_io::parse_model_input(Algo::id, j); }
@@ -101,7 +114,31 @@ template <class A> struct ModelSpec {
   template <class Num> static Prepared<Num> prepare(const Input& in) {
     return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, bounded_by_one(in.choice)};
   }
+  // The image view: the model over a sphere's normals, l and e as given, decisions exact per sample.
+  static constexpr std::string_view sweep_caption = "normals of a unit sphere seen from +z, l and e as given";
+  static constexpr bool sweep_shaded = true;
+  template <class Num> static auto sweeper(const Input& base, const SweepGrid& g) {
+    return [base, g](int i, int j, Prepared<Num>& p) {
+      const auto n = sphere_normal(g, i, j);
+      p.outside = !n;
+      if (!n) return;
+      Input in = base;
+      in.n = *n;
+      lighting_io::decide(in);
+      p = prepare<Num>(in);
+    };
+  }
+  static Json sweep_input(Json j, const Input&, const SweepGrid& g, int i, int k) {
+    if (const auto n = sphere_normal(g, i, k)) j["n"] = {n->x.get_d(), n->y.get_d(), n->z.get_d()};
+    return j;
+  }
+  static float sweep_value(const Output& o) { return o.outside ? NAN : static_cast<float>(o.value); }
   template <class Num, class Probe> static Output compute(const Prepared<Num>& x, Probe& probe) {
+    if (x.outside) {
+      Output o;
+      o.outside = true;
+      return o;
+    }
     Frame<Num> f;
     const Num v = evaluate<Algo>(x.choice, x.n, x.l, x.e, x.p, probe, x.signs, &f);
     Output o;
