@@ -28,3 +28,5 @@ shot 17-bsp-painter             # half painted, back to front
 shot 18-kd-ray-mesh             # (needs out/meshes) the hit beyond the leaf, on the tree
 shot 19-gouraud-phong           # the largest difference: Phong's highlight that Gouraud misses
 shot 20-minnaert-moon           # the full-moon disc, nearly flat (the Sweep tab)
+shot 21-fresnel-grazing         # F = 0.573 at 84.3 degrees
+shot 22-phong-blinn             # 0.985^20 = 0.736 against Blinn-Phong's 0.927
