@@ -114,6 +114,15 @@ inline void require_all_geometry_checked(const StepGeometry& g, std::size_t step
 // Calls check(s, line, values, geometry) for every step of listing L at scope 0 of an exact
 // recording, requiring every variable and geometry item to be looked at; nested steps (a callee's
 // listing) go to `nested`, and without one a nested step fails.
+// Calls check(values, geometry) for step s, then requires every variable and item looked at.
+template <class F> void check_step(const Recorder<Rational>& t, std::size_t s, F&& check) {
+  StepValues sv = values_of(t, s);
+  StepGeometry g = geometry_of(t, s);
+  check(sv, g);
+  require_all_checked(sv, s);
+  require_all_geometry_checked(g, s);
+}
+
 template <class L, class F> void for_each_step(const Recorder<Rational>& t, F&& check, const std::function<void(std::size_t)>& nested = {}) {
   for (std::size_t s = 0; s < t.size(); ++s) {
     if (t.at(s).scope != 0) {
@@ -124,12 +133,14 @@ template <class L, class F> void for_each_step(const Recorder<Rational>& t, F&& 
     }
     const std::string_view line = L::lines[t.at(s).line - 1].name;
     INFO("step " << s << " line " << line);
-    StepValues sv = values_of(t, s);
-    StepGeometry g = geometry_of(t, s);
-    check(s, line, sv, g);
-    require_all_checked(sv, s);
-    require_all_geometry_checked(g, s);
+    check_step(t, s, [&](StepValues& sv, StepGeometry& g) { check(s, line, sv, g); });
   }
+}
+
+// A 2D point or segment item's values.
+inline void check_point(GeoItem& g, const Vec2<Rational>& p) { CHECK(g.values == std::vector<Rational>{p.x, p.y}); }
+inline void check_segment(GeoItem& g, const Vec2<Rational>& a, const Vec2<Rational>& b) {
+  CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y});
 }
 
 }  // namespace sw::testing

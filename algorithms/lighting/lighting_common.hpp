@@ -7,6 +7,7 @@
 #include <optional>
 #include <type_traits>
 #include "core/functions.hpp"
+#include "core/interval.hpp"
 #include "core/number.hpp"
 #include "core/probe.hpp"
 #include "lighting/brdf.hpp"
@@ -19,54 +20,42 @@ namespace sw::lighting {
   X(horizon, "lit <- N.L > 0; seen <- N.E > 0          -- exact signs of the raw dot products") \
   X(below, "if not (lit and seen): term <- 0; stop    -- light or eye behind the surface")
 
-// The exact signs of the frame's polynomials in the raw vectors. Rational: directly. float and
-// double: evaluated in double with a forward error bound (a float's products are exact in double);
-// when the bound does not separate the value from 0, or a product may have underflowed, the same
-// polynomial in exact rationals decides (the inputs convert to rationals exactly).
+// The raw vectors as rationals (exactly) and as intervals, for exact_sign.
 namespace detail {
-inline constexpr double kEps = 0x1p-53;
-inline constexpr double kTiny = 0x1p-900;  // below this a bound may have lost products to underflow
-
 inline Vec3<Rational> exact3(const Vec3<Rational>& v) { return v; }
 template <class Num> Vec3<Rational> exact3(const Vec3<Num>& v) {
   return {num::to_rational(double(v.x)), num::to_rational(double(v.y)), num::to_rational(double(v.z))};
 }
-inline int sgn_q(const Rational& q) { return sgn(q); }
-inline double dot_d(const Vec3<double>& a, const Vec3<double>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline double dot_abs(const Vec3<double>& a, const Vec3<double>& b) {
-  return std::fabs(a.x * b.x) + std::fabs(a.y * b.y) + std::fabs(a.z * b.z);
-}
-template <class Num> Vec3<double> widen(const Vec3<Num>& v) { return {double(v.x), double(v.y), double(v.z)}; }
+template <class Num> Vec3<Interval> interval3(const Vec3<Num>& v) { return {Interval(double(v.x)), Interval(double(v.y)), Interval(double(v.z))}; }
 }  // namespace detail
+
+// sign(f(vectors)) exactly, f a polynomial of the raw input: in the project's intervals first (a
+// comparison they cannot certify throws Uncertain), in rationals where they cannot decide.
+template <class F, class Num, class... More> int exact_sign(F&& f, const Vec3<Num>& a, const More&... more) {
+  auto exact = [&] { return sgn(Rational(f(detail::exact3(a), detail::exact3(more)...))); };
+  if constexpr (std::is_same_v<Num, Rational>) {
+    return exact();
+  } else {
+    try {
+      const Interval v = f(detail::interval3(a), detail::interval3(more)...);
+      return v > Interval(0) ? 1 : v < Interval(0) ? -1 : 0;
+    } catch (const Uncertain&) {
+      return exact();
+    }
+  }
+}
 
 // sign(a.b)
 template <class Num> int sign_dot(const Vec3<Num>& a, const Vec3<Num>& b) {
-  if constexpr (std::is_same_v<Num, Rational>) {
-    return sgn(dot(a, b));
-  } else {
-    const Vec3<double> x = detail::widen(a), y = detail::widen(b);
-    const double s = detail::dot_d(x, y), bound = 4 * detail::kEps * detail::dot_abs(x, y);
-    if (std::fabs(s) > bound && bound > detail::kTiny) return s > 0 ? 1 : -1;
-    return sgn(dot(detail::exact3(a), detail::exact3(b)));
-  }
+  return exact_sign([](const auto& x, const auto& y) { return dot(x, y); }, a, b);
 }
 
 // sign(2 (N.L)(N.E) - (N.N)(L.E)): |N|^2 |L| |E| times r.e, with r the mirror of l about n.
 template <class Num> int sign_mirror(const Vec3<Num>& n, const Vec3<Num>& l, const Vec3<Num>& e) {
-  auto exact = [&] {
-    const Vec3<Rational> N = detail::exact3(n), L = detail::exact3(l), E = detail::exact3(e);
-    return sgn(Rational(2 * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E)));
-  };
-  if constexpr (std::is_same_v<Num, Rational>) {
-    return exact();
-  } else {
-    const Vec3<double> N = detail::widen(n), L = detail::widen(l), E = detail::widen(e);
-    const double s = 2 * detail::dot_d(N, L) * detail::dot_d(N, E) - detail::dot_d(N, N) * detail::dot_d(L, E);
-    const double a = 2 * detail::dot_abs(N, L) * detail::dot_abs(N, E) + detail::dot_abs(N, N) * detail::dot_abs(L, E);
-    const double bound = 16 * detail::kEps * a;  // 9 roundings at most on any path; 16 leaves room
-    if (std::fabs(s) > bound && bound > detail::kTiny) return s > 0 ? 1 : -1;
-    return exact();
-  }
+  return exact_sign([](const auto& N, const auto& L, const auto& E) {
+    using T = std::decay_t<decltype(N.x)>;
+    return T(T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E));
+  }, n, l, e);
 }
 
 // v / |v| (v != 0; a float v whose square underflows gives Inf or NaN components: a float failure

@@ -19,8 +19,8 @@ inline bool covered(const std::vector<Pixel>& set, Pixel p) {
 }
 using testing::for_each_step;
 
-inline void check_point(GeoItem& g, const V& p) { CHECK(g.values == std::vector<Rational>{p.x, p.y}); }
-inline void check_segment(GeoItem& g, const V& a, const V& b) { CHECK(g.values == std::vector<Rational>{a.x, a.y, b.x, b.y}); }
+using testing::check_point;
+using testing::check_segment;
 inline void check_polygon(GeoItem& g, const std::vector<V>& ring) {
   std::vector<Rational> want;
   for (const V& v : ring) want.push_back(v.x), want.push_back(v.y);
