@@ -123,11 +123,9 @@ struct GlRow {
   std::size_t mesa_closer = 0, float_closer = 0, tied = 0;  // which is nearer the reference (largest channel)
   std::size_t decision_flips = 0;
   std::size_t flips_shininess0 = 0;  // of those, the material's shininess is 0
-  std::size_t s0_differ = 0, s0_ln2 = 0;  // shininess 0, > 1/255 from the reference; of those, fitted
-  std::array<std::array<int, 3>, 2> s0_fit{};  // fitted factor (0, ln 2, 1) of each lit light, by n.h > 0
-  std::size_t differing_s0 = 0;      // shininess 0 and more than 1/255 from the reference
-  std::size_t explained_s0 = 0;      // of those: Mesa within 1/255 of the reference plus ks Is att spot
-                                     // for every light with n.l <= 0 and n.h > 0 (GL's f_i = 0 ignored)  // Mesa's spot or lit side differs from the reference's (excluded from the maxima)
+  std::size_t s0_differ = 0;         // shininess 0 and more than 1/255 from GL's formula (the reference)
+  std::size_t s0_explained = 0;      // of those: within 1/255 of mesa_shininess0 (Mesa's own code path)
+  double s0_mesa_vs_model = 0;       // max |Mesa - mesa_shininess0| over the shininess-0 scenes
   std::size_t no_vertex = 0;
 };
 
@@ -135,6 +133,35 @@ struct GlComparison {
   std::vector<GlRow> rows;  // shininess > 0: all, local viewer, infinite viewer, spots, attenuation; shininess 0
   std::vector<std::string> examples;  // the first few large differences, as JSON input lines
 };
+
+// Mesa's colour for a material of shininess 0, from its fixed-function vertex program (Mesa 22.3,
+// src/mesa/main/ffvertex_prog.c, build_lighting): with shininess 0 it never forms n.h and puts n.l
+// in every component of the vector it hands to LIT. A light with a spot cone or distance
+// attenuation (k0 != 1, k1 or k2 != 0: Mesa's light_attenuated) takes the LIT path, whose specular
+// factor is then max(n.l, 0)^(n.l) (0.692 ... 1) where GL specifies (n.h)^0 = 1; any other light takes
+// a reduced LIT that gives 1. This is GL's formula with that one substitution, in double.
+inline std::array<double, 3> mesa_shininess0(const ShadeScene<Rational>& s, const lighting::Shaded<Rational>& ref,
+                                             const lighting::Shaded<double>& dbl) {
+  std::array<double, 3> out{ref.rgb.x.get_d(), ref.rgb.y.get_d(), ref.rgb.z.get_d()};
+  for (std::size_t i = 0; i < s.lights.size(); ++i) {
+    const auto& l = s.lights[i];
+    const auto& t = dbl.lights[i];
+    const bool positional = l.type != lighting::LightType::directional;
+    const bool attenuated = float(l.k0.get_d()) != 1.f || sgn(l.k1) != 0 || sgn(l.k2) != 0;
+    if (!t.lit || !((l.type == lighting::LightType::spot && !l.cone.all) || (positional && attenuated))) continue;
+    const double factor = std::pow(t.diffuse, t.diffuse);  // GL's convention: diffuse = n.l where lit
+    for (int k = 0; k < 3; ++k)
+      out[std::size_t(k)] -= (1 - factor) * t.attenuation * t.spot * l.specular[k].get_d() * s.material.ks[k].get_d();
+  }
+  return out;
+}
+
+// The largest of |a - b| over r, g, b, in units of 1/255.
+inline double max_channel_gap(const std::array<float, 3>& a, const std::array<double, 3>& b) {
+  double m = 0;
+  for (std::size_t k = 0; k < 3; ++k) m = std::max(m, std::fabs(double(a[k]) - b[k]) * 255);
+  return m;
+}
 
 // with_oracle: also run the independent MPFR oracle (slow: about as long as the reference).
 inline GlComparison compare_gl(GlLighting& gl, std::vector<ShadeScene<Rational>> scenes, bool with_oracle = true) {
@@ -172,46 +199,13 @@ inline GlComparison compare_gl(GlLighting& gl, std::vector<ShadeScene<Rational>>
     }
     const bool missing = !std::isfinite(mesa[0]);
     const bool large = !missing && mr > 4;  // more than 4/255: a side of a decision, or a convention
-    // Shininess 0: which factor f_i in {0, ln 2, 1} for each lit light's specular (GL: (n.h)^0 = 1)
-    // reproduces Mesa's colour within 1/255? Tallied by the sign of n.h (s0_fit[n.h > 0][factor]).
-    bool ln2 = false;
-    std::array<std::array<int, 3>, 2> fit{};
-    if (sgn(s.material.params.shininess) == 0 && mr > 1) {
-      const double factors[3] = {0, std::log(2.0), 1};
-      const auto dsc = lighting::convert_scene<double>(s);
-      const Vec3<double> nn = lighting::unit(dsc.n), ee = lighting::unit(dsc.eye_at_infinity ? dsc.eye : Vec3<double>(dsc.eye - dsc.p));
-      int combos = 1;
-      for (std::size_t i = 0; i < s.lights.size(); ++i) combos *= 3;
-      for (int code = 0; code < combos && !ln2; ++code) {
-        double worst = 0;
-        int cc = code;
-        std::array<int, 8> pick{};
-        for (std::size_t i = 0; i < s.lights.size(); ++i) pick[i] = cc % 3, cc /= 3;
-        for (int k = 0; k < 3; ++k) {
-          double alt = ref.rgb[k].get_d();
-          for (std::size_t i = 0; i < s.lights.size(); ++i)
-            if (dbl.lights[i].lit)
-              alt -= (1 - factors[pick[i]]) * dbl.lights[i].attenuation * dbl.lights[i].spot * s.lights[i].specular[k].get_d() * s.material.ks[k].get_d();
-          worst = std::max(worst, std::fabs(mesa[std::size_t(k)] - alt) * 255);
-        }
-        if (worst <= 1) {
-          ln2 = true;
-          for (std::size_t i = 0; i < s.lights.size(); ++i) {
-            if (!dbl.lights[i].lit) continue;
-            const auto& L = dsc.lights[i];
-            const Vec3<double> l = lighting::unit(L.type == lighting::LightType::directional ? L.where : Vec3<double>(L.where - dsc.p));
-            ++fit[dot(nn, Vec3<double>(l + ee)) > 0][std::size_t(pick[i])];
-          }
-        }
-      }
-    }
+    const double s0_model = sgn(s.material.params.shininess) == 0 ? max_channel_gap(mesa, mesa_shininess0(s, ref, dbl)) : 0;
     auto add = [&](GlRow& row) {
       ++row.cases;
       if (missing) { ++row.no_vertex; return; }
-      if (sgn(s.material.params.shininess) == 0 && mr > 1) {
-        ++row.s0_differ, row.s0_ln2 += ln2;
-        for (int a = 0; a < 2; ++a)
-          for (int b = 0; b < 3; ++b) row.s0_fit[a][b] += fit[a][b];
+      if (sgn(s.material.params.shininess) == 0) {
+        row.s0_mesa_vs_model = std::max(row.s0_mesa_vs_model, s0_model);
+        if (mr > 1) ++row.s0_differ, row.s0_explained += s0_model <= 1;
       }
       if (large) {
         ++row.decision_flips;
@@ -228,7 +222,7 @@ inline GlComparison compare_gl(GlLighting& gl, std::vector<ShadeScene<Rational>>
       c.examples.push_back("mesa " + std::to_string(mesa[0]) + " " + std::to_string(mesa[1]) + " " + std::to_string(mesa[2]) + " ref " +
                            std::to_string(ref.rgb.x.get_d()) + " " + std::to_string(ref.rgb.y.get_d()) + " " + std::to_string(ref.rgb.z.get_d()) + ": " +
                            lighting::scene_json(s).dump());
-    if (sgn(s.material.params.shininess) == 0) {  // apart: Mesa's (n.h)^0 is not always 1
+    if (sgn(s.material.params.shininess) == 0) {  // apart: Mesa's (n.h)^0 is not always 1 (mesa_shininess0)
       add(c.rows[5]);
       continue;
     }
