@@ -43,6 +43,15 @@ struct Handle {
   std::string label;    // drawn beside it
 };
 
+// A scalar input the app offers as a slider (a model's exponent, roughness or index).
+struct Param {
+  std::string pointer;  // e.g. "/shininess", "/material/m"
+  std::string label;    // beside the slider
+  double lo = 0, hi = 1;
+  bool logarithmic = false;  // the slider moves in ratios (exponents, roughness)
+  std::string help;          // the tooltip
+};
+
 struct Algorithm {
   std::string_view id, family, summary;
   Listing listing;
@@ -50,6 +59,11 @@ struct Algorithm {
   // The table view's rows: steps on these listing lines each start a row (empty: every step).
   std::vector<std::string_view> table_lines;
   Sweep sweep;                     // optional: fills the image view
+  Sweep lobe;                      // optional: fills the lobe view (one row of directions)
+  std::vector<Param> params;       // optional: sliders
+  // Algorithms of one non-empty group take the same input shape and can run side by side (the
+  // app's "compare with" another algorithm): keys their examples share carry over.
+  std::string_view compare_group;
   Outline outline;                 // optional: the exact curve, drawn with the pixels
   std::vector<Handle> handles;
   std::vector<Numeric> numerics;  // the number types this algorithm runs on

@@ -6,6 +6,7 @@
 // hook silently ignored. The hooks' meanings are listed in adapter.hpp and sweep.hpp.
 #pragma once
 #include <array>
+#include <optional>
 #include <concepts>
 #include <ostream>
 #include <string>
@@ -29,8 +30,12 @@ enum class Hook : std::uint8_t {
   sweep_input,     // static Json sweep_input(Json, const Input&, const SweepGrid&, int, int)
   outline,         // static std::vector<Polyline2> outline(const Input&, const Rect2&, double cell)
   sweep_shaded,    // static constexpr bool sweep_shaded = true: the sweep's values are intensities in [0, 1]
+  lobe,            // template <class Num> static auto lobe_sweeper(const Input&, const SweepGrid&), with sweep_value,
+                   // lobe_angles(const Input&) and lobe_input(Json, const Input&, const SweepGrid&, int)
+  params,          // static std::vector<Param> params()
+  compare_group,   // static constexpr std::string_view compare_group
 };
-inline constexpr std::size_t kHookCount = 14;
+inline constexpr std::size_t kHookCount = 17;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -61,6 +66,15 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::sweep_input: return requires(const In& in, const SweepGrid& g) { { S::sweep_input(Json(), in, g, 0, 0) } -> std::convertible_to<Json>; };
     case Hook::outline: return requires(const In& in, const Rect2& r) { S::outline(in, r, 1.0); };
     case Hook::sweep_shaded: return requires { { S::sweep_shaded } -> std::convertible_to<bool>; };
+    case Hook::lobe:
+      return requires(const In& in, const SweepGrid& g, const Out& o) {
+        S::template lobe_sweeper<Rational>(in, g);
+        { S::sweep_value(o) } -> std::convertible_to<float>;
+        { S::lobe_angles(in) } -> std::convertible_to<std::optional<std::array<double, 2>>>;
+        { S::lobe_input(Json(), in, g, 0) } -> std::convertible_to<Json>;
+      };
+    case Hook::params: return requires { { S::params() } -> std::same_as<std::vector<Param>>; };
+    case Hook::compare_group: return requires { { S::compare_group } -> std::convertible_to<std::string_view>; };
   }
   return false;
 }

@@ -8,6 +8,12 @@
 //   static Json sweep_input(Json input, const Input&, const SweepGrid&, int i, int j);  // sample (i, j)
 //   static constexpr std::string_view sweep_caption;
 //   static constexpr bool sweep_shaded = true;  // values are intensities in [0, 1]
+//   template <class Num> static auto lobe_sweeper(const Input& base, const SweepGrid&);  // the lobe
+//       view's sweep: sample (i, 0) is the direction at angle g.x(i) degrees (sweep_value as above)
+//   static std::optional<std::array<double, 2>> lobe_angles(const Input&);  // Sweep::angles
+//   static Json lobe_input(Json input, const Input&, const SweepGrid&, int i);  // sample i
+//   static std::vector<Param> params();                       // sliders (catalog.hpp)
+//   static constexpr std::string_view compare_group;          // Algorithm::compare_group
 //   static std::vector<Polyline2> outline(const Input&, const Rect2& window, double cell);
 #pragma once
 #include <limits>
@@ -25,17 +31,25 @@ template <class Spec> constexpr bool table_lines_exist() {
 }
 
 template <class Spec, class N> using SweepPrepared = decltype(Spec::template prepare<N>(std::declval<const typename Spec::Input&>()));
-template <class Spec, class N>
-using SweepSetter = decltype(Spec::template sweeper<N>(std::declval<const typename Spec::Input&>(), std::declval<const SweepGrid&>()));
+
+// Which of a Spec's sweeps: the image view's grid, or the lobe view's row of directions.
+struct ImageSweep {
+  template <class Spec, class N> static auto setter(const typename Spec::Input& in, const SweepGrid& g) { return Spec::template sweeper<N>(in, g); }
+};
+struct LobeSweep {
+  template <class Spec, class N> static auto setter(const typename Spec::Input& in, const SweepGrid& g) { return Spec::template lobe_sweeper<N>(in, g); }
+};
+template <class Spec, class N, class Which>
+using SweepSetter = decltype(Which::template setter<Spec, N>(std::declval<const typename Spec::Input&>(), std::declval<const SweepGrid&>()));
 
 // Filtered and exact sweeps: each sample through the filter stages, then exact rationals where
 // none decides, so the values equal exact. One prepared input per stage, changed in place.
-template <class Spec, class Stages = typename FiltersOf<Spec>::type> struct CertifiedSweep;
-template <class Spec, class... S> struct CertifiedSweep<Spec, std::tuple<S...>> {
+template <class Spec, class Which, class Stages = typename FiltersOf<Spec>::type> struct CertifiedSweep;
+template <class Spec, class Which, class... S> struct CertifiedSweep<Spec, Which, std::tuple<S...>> {
   template <class N> struct Stage {
     std::optional<SweepPrepared<Spec, N>> prepared;  // none: the stage cannot take the input
-    SweepSetter<Spec, N> set;
-    Stage(const typename Spec::Input& in, const SweepGrid& g) : set(Spec::template sweeper<N>(in, g)) {
+    SweepSetter<Spec, N, Which> set;
+    Stage(const typename Spec::Input& in, const SweepGrid& g) : set(Which::template setter<Spec, N>(in, g)) {
       try {
         prepared.emplace(Spec::template prepare<N>(in));
       } catch (const Uncertain&) {
@@ -65,8 +79,8 @@ template <class Spec, class... S> struct CertifiedSweep<Spec, std::tuple<S...>> 
 };
 
 // Runs Spec untraced over the grid (see Sweep::run): the input is prepared once per number type
-// and the Spec's sweeper changes what varies, sample by sample.
-template <class Spec> void run_sweep(const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) {
+// and the Spec's sweeper (Which) changes what varies, sample by sample.
+template <class Spec, class Which> void run_sweep(const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) {
   const typename Spec::Input base = Spec::parse(j, n);
   out.assign(static_cast<std::size_t>(std::max(g.w, 0)) * static_cast<std::size_t>(std::max(g.h, 0)),
              std::numeric_limits<float>::quiet_NaN());
@@ -76,7 +90,7 @@ template <class Spec> void run_sweep(const Json& j, Numeric n, const SweepGrid& 
   };
   if constexpr (spec_has<Spec>(Numeric::filtered)) {
     if (n == Numeric::filtered || n == Numeric::exact) {
-      CertifiedSweep<Spec> sweep(base, g);
+      CertifiedSweep<Spec, Which> sweep(base, g);
       each([&](int x, int y) { return sweep.at(x, y); });
       return;
     }
@@ -84,7 +98,7 @@ template <class Spec> void run_sweep(const Json& j, Numeric n, const SweepGrid& 
   with_number_type<Spec>(n, [&](auto t) {
     using Num = typename decltype(t)::type;
     auto p = Spec::template prepare<Num>(base);
-    auto set = Spec::template sweeper<Num>(base, g);
+    auto set = Which::template setter<Spec, Num>(base, g);
     NoProbe none;
     each([&](int x, int y) {
       set(x, y, p);
@@ -100,7 +114,7 @@ template <class Spec> void fill_view_hooks(Algorithm& a) {
     a.table_lines.assign(Spec::table_lines.begin(), Spec::table_lines.end());
   }
   if constexpr (names_hook<Spec>(Hook::sweeper)) {
-    a.sweep.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec>(j, n, g, out); };
+    a.sweep.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec, ImageSweep>(j, n, g, out); };
     if constexpr (names_hook<Spec>(Hook::sweep_marker))
       a.sweep.marker = [](const Json& j) { return Spec::sweep_marker(Spec::parse(j, Numeric::exact)); };
     if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
@@ -108,6 +122,14 @@ template <class Spec> void fill_view_hooks(Algorithm& a) {
     if constexpr (names_hook<Spec>(Hook::sweep_input))
       a.sweep.sample = [](const Json& j, const SweepGrid& g, int x, int y) { return Spec::sweep_input(j, Spec::parse(j, Numeric::exact), g, x, y); };
   }
+  if constexpr (names_hook<Spec>(Hook::lobe)) {
+    a.lobe.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec, LobeSweep>(j, n, g, out); };
+    a.lobe.angles = [](const Json& j) { return Spec::lobe_angles(Spec::parse(j, Numeric::exact)); };
+    a.lobe.sample = [](const Json& j, const SweepGrid& g, int x, int) { return Spec::lobe_input(j, Spec::parse(j, Numeric::exact), g, x); };
+    a.lobe.shaded = true;
+  }
+  if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
+  if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;
   if constexpr (names_hook<Spec>(Hook::outline))
     a.outline = [](const Json& j, const Rect2& w, double cell) { return Spec::outline(Spec::parse(j, Numeric::exact), w, cell); };
 }

@@ -21,8 +21,9 @@ enum class View : std::uint8_t {
   image,    // a sweep of the algorithm over a grid of inputs, against exact
   plot,     // the table's columns over its rows, against an exact run
   tree,     // a tree's nodes as a diagram: built so far, the current node, the traversal stack
+  lobe,     // a polar plot: the algorithm swept over directions in a plane (a BRDF's lobe), against exact
 };
-inline constexpr std::array<std::string_view, 6> kViewNames = {"plane2d", "orbit3d", "table", "image", "plot", "tree"};
+inline constexpr std::array<std::string_view, 7> kViewNames = {"plane2d", "orbit3d", "table", "image", "plot", "tree", "lobe"};
 constexpr std::string_view view_name(View v) { return kViewNames[static_cast<std::size_t>(v)]; }
 inline std::optional<View> parse_view(std::string_view s) {
   for (std::size_t i = 0; i < kViewNames.size(); ++i)
@@ -55,6 +56,9 @@ struct Sweep {
   // Sample (i, j)'s input as JSON, as the sweep ran it (the app opens it on a click).
   std::function<Json(const Json& input, const SweepGrid&, int i, int j)> sample;
   std::string_view caption;  // what a sample is, for the view's legend
+  // The lobe view's sweep only: the angles in degrees (in its grid's x) of the input's light and, if
+  // it lies in the swept plane, of its eye (NaN if not).
+  std::function<std::optional<std::array<double, 2>>(const Json& input)> angles;
   // The values are intensities in [0, 1] (a shaded picture), not distances along a ray: the view
   // shows them grey and counts a difference over 1/255 from the reference as a disagreement.
   bool shaded = false;

@@ -79,7 +79,8 @@ TEST_CASE("visualizer lesson: front matter, narration keys and the manifest", "[
   CHECK(l.algorithm->id == "dda-line");
   CHECK(l.numeric == Numeric::exact);
   REQUIRE(l.compare);
-  CHECK(*l.compare == Numeric::f32);
+  CHECK(l.compare.numeric == Numeric::f32);
+  CHECK(l.compare.other == nullptr);
   CHECK(l.start_step == 3);
   REQUIRE(l.intro());
   CHECK(l.intro()->text == "Intro text.");

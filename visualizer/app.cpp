@@ -48,7 +48,7 @@ bool App::open_lesson(const std::filesystem::path& file) {
   }
 }
 
-bool App::open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare) {
+bool App::open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, Comparison compare) {
   if (std::string err = load(alg, input, numeric, compare, false); !err.empty()) {
     error_ = err;
     return false;
@@ -57,15 +57,23 @@ bool App::open_algorithm(const Algorithm& alg, const Json& input, Numeric numeri
   return true;
 }
 
-std::string App::load(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare, bool keep_view) {
+std::string App::load(const Algorithm& alg, const Json& input, Numeric numeric, Comparison compare, bool keep_view) {
   std::shared_ptr<const TraceModel> a, b;
+  Json other_input;
+  if (compare.other) compare.numeric = numeric;  // another algorithm runs in the left's number type
   try {
     a = record_model(alg, input, numeric);
-    if (compare) b = record_model(alg, input, *compare);
+    if (compare.other) {
+      const bool same = compare.other == compare_.other && other_input_.is_object();
+      other_input = carried_input(input, same ? other_input_ : parse_json_text(compare.other->example, "example"));
+      b = record_model(*compare.other, other_input, numeric);
+    } else if (compare) {
+      b = record_model(alg, input, *compare.numeric);
+    }
   } catch (const std::exception& e) {  // InputError, or anything the run threw: show it, never crash
-    return std::string(alg.id) + ": " + e.what();
+    return std::string(a && compare.other ? compare.other->id : alg.id) + ": " + e.what();
   }
-  alg_ = &alg, input_ = input, numeric_ = numeric, compare_ = compare;
+  alg_ = &alg, input_ = input, numeric_ = numeric, compare_ = compare, other_input_ = std::move(other_input);
   a_ = std::move(a), b_ = std::move(b);
   stats_ = b_ ? std::optional(compare_traces(*a_, *b_)) : std::nullopt;
   // A re-run keeps the view shown if the algorithm has it; else its first declared view.
@@ -105,19 +113,39 @@ bool App::rerun_with_input(const Json& input) {
   return true;
 }
 
-void App::apply_input(const Json& input) {
-  if (!alg_) return;
+std::string App::validate_runs(const Json& input) const {
   try {
     alg_->validate(input, numeric_);
-    if (compare_) alg_->validate(input, *compare_);
+    if (compare_.other) compare_.other->validate(carried_input(input, other_input_), numeric_);
+    else if (compare_) alg_->validate(input, *compare_.numeric);
   } catch (const InputError& e) {
-    edit_error_ = e.what();
+    return e.what();
+  }
+  return {};
+}
+
+void App::apply_input(const Json& input) {
+  if (!alg_) return;
+  if (std::string err = validate_runs(input); !err.empty()) {
+    edit_error_ = err;
     return;
   }
   rerun_with_input(input);
 }
 
-void App::rerun_numerics(Numeric numeric, std::optional<Numeric> compare) {
+void App::apply_other_input(const Json& other_input) {
+  if (!alg_ || !compare_.other) return;
+  try {
+    compare_.other->validate(other_input, numeric_);
+  } catch (const InputError& e) {
+    edit_error_ = std::string(compare_.other->id) + ": " + e.what();
+    return;
+  }
+  const Json previous = std::exchange(other_input_, other_input);
+  if (!rerun_with_input(input_)) other_input_ = previous;
+}
+
+void App::rerun_numerics(Numeric numeric, Comparison compare) {
   if (!alg_) return;
   if (std::string err = load(*alg_, input_, numeric, compare, true); !err.empty()) edit_error_ = err;
 }
@@ -140,12 +168,9 @@ void App::on_drag(const CanvasEvents::Drag& d) {
     Json in = input_;
     Rational x(mpz_class(std::lround(d.x * double(den))), mpz_class(den)), y(mpz_class(std::lround(d.y * double(den))), mpz_class(den));
     x.canonicalize(), y.canonicalize();
-    try {
-      in[Json::json_pointer(h.pointer)] = Json::array({rational_json(x), rational_json(y)});
-      alg_->validate(in, numeric_);
-      if (compare_) alg_->validate(in, *compare_);
-    } catch (const std::exception& e) {
-      edit_error_ = e.what();
+    in[Json::json_pointer(h.pointer)] = Json::array({rational_json(x), rational_json(y)});
+    if (std::string err = validate_runs(in); !err.empty()) {
+      edit_error_ = err;
       continue;
     }
     if (in != input_) rerun_with_input(in);
@@ -237,7 +262,7 @@ void App::frame(float dt) {
   const ImVec2 d = ImGui::GetIO().DisplaySize;
   // Toolbar on top, timeline at the bottom; canvas with the narration under it on the left; the
   // listing (as tall as its text, measured last frame) and the state on the right.
-  const float top = 76, bottom = 96;
+  const float top = has_sliders() ? 106 : 76, bottom = 96;
   const float right = std::clamp(d.x * 0.37f, 340.f, 560.f), left = d.x - right;
   const float mid = std::max(d.y - top - bottom, 200.f);
   const float narration_h = lesson_ ? std::clamp(mid * 0.25f, 110.f, 220.f) : 76.f;
@@ -275,7 +300,7 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
   if (a_ && canvases_[0]) {
     const int n = b_ ? 2 : 1;
     const float w = (avail.x - float(n - 1) * 4) / float(n);
-    const std::string label_a = std::string(numeric_name(numeric_)), label_b = b_ ? std::string(numeric_name(*compare_)) : "";
+    const std::string label_a = compare_.other ? Comparison(numeric_, alg_).label() : std::string(numeric_name(numeric_)), label_b = compare_.label();
     for (int i = 0; i < n; ++i) {
       if (i) ImGui::SameLine(0, 4);
       ImGui::PushID(i);
@@ -315,7 +340,18 @@ void App::draw_view_tabs() {
 
 void App::draw_compare_strip() {
   const CompareStats& s = *stats_;
-  const std::string na(numeric_name(numeric_)), nb(numeric_name(*compare_));
+  if (compare_.other) {  // two algorithms: their results side by side (their steps do not pair up)
+    auto outcome = [](const TraceModel& m) {
+      const Json& r = m.result();
+      if (r.is_object() && r.contains("value")) return "value " + (r["value"].is_number() ? std::to_string(r["value"].get<double>()) : r["value"].dump());
+      return std::string(m.size() ? "done" : "no steps");
+    };
+    ImGui::Text("%s: %zu steps, %s    %s: %zu steps, %s", std::string(alg_->id).c_str(), s.steps_a, outcome(*a_).c_str(), std::string(compare_.other->id).c_str(),
+                s.steps_b, outcome(*b_).c_str());
+    ImGui::TextDisabled("Both run on the keys their inputs share; each one's own parameters have their own sliders.");
+    return;
+  }
+  const std::string na(numeric_name(numeric_)), nb(numeric_name(*compare_.numeric));
   if (std::find(alg_->views.begin(), alg_->views.end(), View::plane2d) != alg_->views.end()) {
     ImGui::Text("%s: %zu steps, %zu pixels    %s: %zu steps, %zu pixels    ", na.c_str(), s.steps_a, s.pixels_a, nb.c_str(), s.steps_b, s.pixels_b);
     ImGui::SameLine();

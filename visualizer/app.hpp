@@ -25,7 +25,7 @@ class App {
 
   // Loading never throws: on failure it returns false, error() says why, and the app shows it.
   bool open_lesson(const std::filesystem::path& file);
-  bool open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare = std::nullopt);
+  bool open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, Comparison compare = {});
   bool open_first_lesson();
   const std::string& error() const { return error_; }
   void show_error(std::string message) { error_ = std::move(message); }
@@ -55,16 +55,22 @@ class App {
 
  private:
   // Records the run(s); on failure returns the message and leaves the open run as it was.
-  std::string load(const Algorithm& alg, const Json& input, Numeric numeric, std::optional<Numeric> compare, bool keep_view);
+  std::string load(const Algorithm& alg, const Json& input, Numeric numeric, Comparison compare, bool keep_view);
+  // The input's errors for both runs (the other algorithm's on its carried input); empty if none.
+  std::string validate_runs(const Json& input) const;
   bool rerun_with_input(const Json& input);  // keeps the relative timeline position
   void apply_input(const Json& input);        // from the edit fields; errors go to edit_error_
-  void rerun_numerics(Numeric numeric, std::optional<Numeric> compare);
+  void rerun_numerics(Numeric numeric, Comparison compare);
+  void apply_other_input(const Json& other_input);  // the other algorithm's own sliders
+  // The sliders of the declared params the input has; pointer keys in `skip` are left out.
+  bool draw_param_sliders(const Algorithm& alg, Json& input, const char* prefix, const Json* skip);
   void on_drag(const CanvasEvents::Drag& d);
   void fill_endpoint_fields();
   void handle_keys();
   void advance_playback(float dt);
 
   void draw_toolbar(ImVec2 pos, ImVec2 size);
+  bool has_sliders() const;  // the toolbar has a third row
   void draw_canvases(ImVec2 pos, ImVec2 size);
   void draw_compare_strip();
   void draw_timeline(ImVec2 pos, ImVec2 size);
@@ -83,7 +89,9 @@ class App {
   const Algorithm* alg_ = nullptr;
   Json input_;
   Numeric numeric_ = Numeric::exact;
-  std::optional<Numeric> compare_;
+  Comparison compare_;
+  Json other_input_;  // the other algorithm's input, when compare_.other
+  std::optional<std::pair<std::string, float>> slider_drag_;  // a slider held in the image view: its id, value
   std::shared_ptr<const TraceModel> a_, b_;
   std::optional<CompareStats> stats_;
   std::array<std::unique_ptr<Canvas>, 2> canvases_;  // the view now shown: main and compare

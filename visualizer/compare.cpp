@@ -2,6 +2,35 @@
 #include <algorithm>
 
 namespace sw::vis {
+
+std::string Comparison::label() const {
+  if (!numeric) return "";
+  const std::string n(numeric_name(*numeric));
+  return other ? std::string(other->id) + " (" + n + ")" : n;
+}
+
+Comparison parse_comparison(const Algorithm& alg, std::string_view name, Numeric numeric) {
+  if (!alg.compare_group.empty())
+    for (const Algorithm& a : catalog())
+      if (a.id == name && &a != &alg && a.compare_group == alg.compare_group) return {numeric, &a};
+  try {
+    return {parse_numeric_for(alg, name)};
+  } catch (const InputError& e) {
+    if (alg.compare_group.empty()) throw;
+    std::string others;
+    for (const Algorithm& a : catalog())
+      if (&a != &alg && a.compare_group == alg.compare_group) others += (others.empty() ? "" : ", ") + std::string(a.id);
+    throw InputError(std::string(e.what()) + "; or another of the " + std::string(alg.compare_group) + ": " + others);
+  }
+}
+
+Json carried_input(const Json& input, const Json& previous) {
+  Json out = previous;
+  if (!input.is_object() || !out.is_object()) return out;
+  for (auto it = out.begin(); it != out.end(); ++it)
+    if (input.contains(it.key())) it.value() = input[it.key()];
+  return out;
+}
 namespace {
 
 bool same_decisions(const TraceView& a, const TraceView& b, std::size_t s) {

@@ -1,9 +1,33 @@
-// Comparing one input run in two number types, step by step (the compare panel).
+// Comparing one input run in two number types, step by step (the compare panel), or in two
+// algorithms of one compare group (two reflection models side by side).
 #pragma once
 #include <optional>
+#include <string_view>
 #include "trace_model.hpp"
 
 namespace sw::vis {
+
+// What the right-hand run is: the same algorithm in another number type, or another algorithm of
+// the same compare group (Algorithm::compare_group), then in the same number type as the left.
+struct Comparison {
+  std::optional<Numeric> numeric;    // none: no right-hand run
+  const Algorithm* other = nullptr;  // another algorithm, run on the keys its input shares
+  Comparison() = default;
+  Comparison(std::nullopt_t) {}
+  Comparison(Numeric n, const Algorithm* o = nullptr) : numeric(n), other(o) {}
+  Comparison(std::optional<Numeric> n) : numeric(n) {}
+  explicit operator bool() const { return numeric.has_value(); }
+  // The right-hand run's label: its number type, or the other algorithm and its number type.
+  std::string label() const;
+};
+
+// `name`: a number type alg runs on, or another algorithm of alg's compare group (which then runs
+// in `numeric`). Throws InputError naming both kinds.
+Comparison parse_comparison(const Algorithm& alg, std::string_view name, Numeric numeric);
+
+// The other algorithm's input: `previous` (its example at first), with every top-level key that
+// `input` also has taken from `input` (the shared vectors and parameters carry over).
+Json carried_input(const Json& input, const Json& previous);
 
 struct CompareStats {
   std::size_t steps_a = 0, steps_b = 0, pixels_a = 0, pixels_b = 0;

@@ -47,8 +47,8 @@ bool open(App& app, const Options& o) {
       const Algorithm& alg = !o.algorithm.empty() || !m ? find_algorithm(o.algorithm.empty() ? "dda-line" : o.algorithm) : m->algorithm();
       const Json input = !o.input.empty() ? read_input_arg(o.input) : m && &m->algorithm() == &alg ? m->input() : parse_json_text(alg.example, "example");
       const Numeric n = !o.numeric.empty() ? parse_numeric_for(alg, o.numeric) : m && &m->algorithm() == &alg ? m->numeric() : parse_numeric_for(alg, "double");
-      std::optional<Numeric> cmp;
-      if (!o.compare.empty()) cmp = parse_numeric_for(alg, o.compare);
+      Comparison cmp;
+      if (!o.compare.empty()) cmp = parse_comparison(alg, o.compare, n);
       if (!app.open_algorithm(alg, input, n, cmp)) return false;
     } catch (const InputError& e) {
       app.show_error(e.what());
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   cli.add_option("--input", o.input, "Input as JSON text or a file holding it");
   lesson->excludes(alg);
   cli.add_option("--numeric", o.numeric, "Number type");
-  cli.add_option("--compare", o.compare, "A second number type, side by side");
+  cli.add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
   cli.add_option("--step", o.step, "Start at this step");
   cli.add_option("--size", o.size, "Window size WxH");
   cli.add_option("--frames", o.frames, "Render this many frames, then exit")->check(CLI::Range(1, 100000));

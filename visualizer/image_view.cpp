@@ -25,24 +25,25 @@ int SweepImage::disagreement(std::size_t k) const {
   return mode[k] > exact[k] ? 1 : -1;
 }
 
-SweepImage sweep_image(const TraceModel& m, SweepGrid grid) {
+SweepImage sweep_image(const TraceModel& m, SweepGrid grid, Sweep Algorithm::*which) {
   SweepImage img;
   const Algorithm& alg = m.algorithm();
+  const Sweep& sweep = alg.*which;
   grid.inputs = m.numeric() == Numeric::f32 ? Numeric::f32 : Numeric::f64;
   img.grid = grid;
-  img.shaded = alg.sweep.shaded;
+  img.shaded = sweep.shaded;
   const auto& ns = alg.numerics;
   img.reference = std::find(ns.begin(), ns.end(), Numeric::exact) == ns.end() && std::find(ns.begin(), ns.end(), Numeric::reference) != ns.end()
                       ? Numeric::reference : Numeric::exact;
-  if (!alg.sweep) return img;
+  if (!sweep) return img;
   auto t0 = std::chrono::steady_clock::now();
-  alg.sweep.run(m.input(), m.numeric(), grid, img.mode);
+  sweep.run(m.input(), m.numeric(), grid, img.mode);
   img.mode_ms = ms_since(t0);
   if (m.numeric() == img.reference) {
     img.exact = img.mode;
   } else {
     t0 = std::chrono::steady_clock::now();
-    alg.sweep.run(m.input(), img.reference, grid, img.exact);
+    sweep.run(m.input(), img.reference, grid, img.exact);
     img.exact_ms = ms_since(t0);
   }
   for (std::size_t k = 0; k < img.mode.size(); ++k) {

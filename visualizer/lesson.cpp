@@ -104,7 +104,7 @@ Lesson parse_lesson(const std::string& text, const std::string& where) {
   try {
     lesson.algorithm = &find_algorithm(alg_id);
     lesson.numeric = parse_numeric_for(*lesson.algorithm, numeric);
-    if (!compare.empty()) lesson.compare = parse_numeric_for(*lesson.algorithm, compare);
+    if (!compare.empty()) lesson.compare = parse_comparison(*lesson.algorithm, compare, lesson.numeric);
     lesson.input = parse_json_text(input_text, "input");
     // A relative mesh file is relative to the lesson's own directory, not to the working directory.
     if (lesson.input.is_object() && lesson.input.contains("mesh") && lesson.input["mesh"].is_string()) {
@@ -112,7 +112,8 @@ Lesson parse_lesson(const std::string& text, const std::string& where) {
       if (mesh.is_relative()) lesson.input["mesh"] = (std::filesystem::path(where).parent_path() / mesh).lexically_normal().string();
     }
     lesson.algorithm->validate(lesson.input, lesson.numeric);
-    if (lesson.compare) lesson.algorithm->validate(lesson.input, *lesson.compare);
+    if (lesson.compare.other) lesson.compare.other->validate(carried_input(lesson.input, parse_json_text(lesson.compare.other->example, "example")), lesson.numeric);
+    else if (lesson.compare) lesson.algorithm->validate(lesson.input, *lesson.compare.numeric);
   } catch (const InputError& e) {
     throw InputError(at(input_line ? input_line : 0) + ": " + e.what());
   }

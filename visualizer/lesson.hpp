@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 #include "catalog.hpp"
+#include "compare.hpp"
 
 namespace sw::vis {
 
@@ -22,7 +23,7 @@ struct Lesson {
   const Algorithm* algorithm = nullptr;
   Json input;
   Numeric numeric = Numeric::exact;
-  std::optional<Numeric> compare;  // a second number type, shown side by side
+  Comparison compare;              // a second number type, or another model, shown side by side
   std::size_t start_step = 0;      // where the timeline starts
   bool focus = false;              // "view: step": zoom in on the start step, not the whole trace
   std::optional<View> show;        // "show: tree": the declared view to open on (default: the first)

@@ -80,12 +80,12 @@ void App::draw_state(ImVec2 pos, ImVec2 size) {
   }
   const std::size_t step_b = std::min(step_, b_->last());
   const auto sb = b_->state_at(step_b);
-  if (step_b != step_) ImGui::TextColored(theme::kError, "%s has only %zu steps", std::string(numeric_name(*compare_)).c_str(), b_->size());
+  if (step_b != step_ && !compare_.other) ImGui::TextColored(theme::kError, "%s has only %zu steps", compare_.label().c_str(), b_->size());
   if (ImGui::BeginTable("vars2", 4, kTable)) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("variable", ImGuiTableColumnFlags_WidthFixed, 70);
-    ImGui::TableSetupColumn(std::string(numeric_name(numeric_)).c_str());
-    ImGui::TableSetupColumn(std::string(numeric_name(*compare_)).c_str());
+    ImGui::TableSetupColumn(compare_.other ? std::string(alg_->id).c_str() : std::string(numeric_name(numeric_)).c_str());
+    ImGui::TableSetupColumn(compare_.label().c_str());
     ImGui::TableSetupColumn("|difference|", ImGuiTableColumnFlags_WidthFixed, 90);
     ImGui::TableHeadersRow();
     for (std::string_view name : a_->var_names()) {

@@ -31,7 +31,11 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     for (const Algorithm& a : catalog()) {
       if (ImGui::Selectable(std::string(a.id).c_str(), &a == alg_) && &a != alg_) {
         const Numeric n = a.supports(numeric_) ? numeric_ : a.numerics.back();
-        const auto cmp = compare_ && a.supports(*compare_) ? compare_ : std::nullopt;
+        // Keep the comparison where it still makes sense: the same number type, or the same other
+        // algorithm if the new one shares its group.
+        Comparison cmp;
+        if (compare_.other && compare_.other != &a && compare_.other->compare_group == a.compare_group) cmp = Comparison(n, compare_.other);
+        else if (!compare_.other && compare_ && a.supports(*compare_.numeric)) cmp = compare_;
         open_algorithm(a, parse_json_text(a.example, "example"), n, cmp);
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(a.summary).c_str());
@@ -49,20 +53,31 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
       ImGui::EndCombo();
     }
     ImGui::SameLine(0, 20);
-    bool on = compare_.has_value();
+    bool on = bool(compare_);
     if (ImGui::Checkbox("Compare with", &on)) {
-      std::optional<Numeric> other;
+      Comparison other;
       if (on)
         for (Numeric n : alg_->numerics)
           if (n != numeric_) other = n;
       rerun_numerics(numeric_, other);
     }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(alg_->compare_group.empty() ? "Run the input in a second number type, side by side"
+                                                    : "Run the input in a second number type, or in another model, side by side");
     if (compare_) {
       ImGui::SameLine();
-      ImGui::SetNextItemWidth(90);
-      if (ImGui::BeginCombo("##cmp", numeric_label(*compare_).c_str())) {
+      ImGui::SetNextItemWidth(compare_.other ? 190 : 90);
+      if (ImGui::BeginCombo("##cmp", compare_.label().c_str())) {
         for (Numeric n : alg_->numerics)
-          if (ImGui::Selectable(numeric_label(n).c_str(), n == *compare_) && n != *compare_) rerun_numerics(numeric_, n);
+          if (ImGui::Selectable(numeric_label(n).c_str(), !compare_.other && n == *compare_.numeric) && (compare_.other || n != *compare_.numeric))
+            rerun_numerics(numeric_, n);
+        if (!alg_->compare_group.empty()) {
+          ImGui::Separator();
+          ImGui::TextDisabled("%s", std::string(alg_->compare_group).c_str());
+          for (const Algorithm& a : catalog())
+            if (&a != alg_ && a.compare_group == alg_->compare_group && ImGui::Selectable(std::string(a.id).c_str(), compare_.other == &a) && compare_.other != &a)
+              rerun_numerics(numeric_, Comparison(numeric_, &a));
+        }
         ImGui::EndCombo();
       }
     }
@@ -118,11 +133,79 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     } else if (a_) {
       ImGui::SameLine(0, 16);
       const bool segment = !handle_text_.empty();
-      if (view_ == View::orbit3d) ImGui::TextDisabled("%zu steps%s", a_->size(), a_->algorithm().handles.empty() ? "" : "; drag a handle on the canvas to edit the input");
+      if (view_ == View::orbit3d || view_ == View::lobe) ImGui::TextDisabled("%zu steps%s", a_->size(), a_->algorithm().handles.empty() ? "" : "; drag a handle on the canvas to edit the input");
       else ImGui::TextDisabled("%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment ? "; drag the handles on the canvas" : "");
     }
   }
+  // Row 3: sliders for the declared parameters the input has, then the other model's own.
+  if (alg_ && has_sliders()) {
+    Json in = input_;
+    if (draw_param_sliders(*alg_, in, compare_.other ? alg_->id.data() : "", nullptr)) apply_input(in);
+    if (compare_.other) {
+      Json other = other_input_;
+      ImGui::SameLine(0, 28);
+      if (draw_param_sliders(*compare_.other, other, compare_.other->id.data(), &input_)) apply_other_input(other);
+    }
+  }
   ImGui::End();
+}
+
+namespace {
+
+// A parameter shown when the input holds a number (or an exact string) at its pointer.
+std::optional<double> param_value(const Json& input, const Param& p, const Json* skip) {
+  const Json::json_pointer ptr(p.pointer);
+  if (!input.is_object() || !input.contains(ptr)) return std::nullopt;
+  if (skip && skip->is_object() && skip->contains(ptr)) return std::nullopt;  // shared: set on the left
+  try {
+    return parse_rational(input[ptr], p.label).get_d();
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+bool App::has_sliders() const {
+  if (!alg_) return false;
+  for (const Param& p : alg_->params)
+    if (param_value(input_, p, nullptr)) return true;
+  if (compare_.other)
+    for (const Param& p : compare_.other->params)
+      if (param_value(other_input_, p, &input_)) return true;
+  return false;
+}
+
+bool App::draw_param_sliders(const Algorithm& alg, Json& input, const char* prefix, const Json* skip) {
+  bool changed = false, first = true;
+  for (const Param& p : alg.params) {
+    const auto v = param_value(input, p, skip);
+    if (!v) continue;
+    if (!first) ImGui::SameLine(0, 16);
+    first = false;
+    if (*prefix) ImGui::TextDisabled("%s", prefix), ImGui::SameLine();
+    ImGui::TextUnformatted(p.label.c_str());
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(130);
+    const std::string id = "##" + std::string(prefix) + p.pointer;
+    // The image view sweeps every sample again on a change: there the value applies on release,
+    // and the slider shows the value being dragged meanwhile.
+    const bool on_release = view_ == View::image;
+    float f = slider_drag_ && slider_drag_->first == id ? slider_drag_->second : float(*v);
+    const ImGuiSliderFlags flags = p.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+    const bool moved = ImGui::SliderFloat(id.c_str(), &f, float(p.lo), float(p.hi), "%.4g", flags);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s, %g to %g%s; Ctrl+click types a value", p.help.c_str(), p.pointer.c_str(), p.lo, p.hi, p.logarithmic ? ", logarithmic" : "");
+    if (moved && on_release) slider_drag_ = {id, f};
+    const bool released = on_release && ImGui::IsItemDeactivated() && slider_drag_ && slider_drag_->first == id;
+    if ((moved && !on_release) || released) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.4g", double(f));  // a short decimal, read exactly
+      input[Json::json_pointer(p.pointer)] = std::strtod(text, nullptr);
+      changed = true;
+    }
+    if (released) slider_drag_.reset();
+  }
+  return changed;
 }
 
 }  // namespace sw::vis

@@ -30,7 +30,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   lesson->excludes(alg)->excludes(input);
   alg->needs(input);
   r->add_option("--numeric", o.numeric, "Number type (default: the lesson's, else double)");
-  r->add_option("--compare", o.compare, "A second number type, side by side");
+  r->add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
   r->add_option("--step", o.step, "The step to show (default: the lesson's step, else the last)");
   auto* out = r->add_option("--out", o.out, "PNG file to write");
   auto* gif = r->add_option("--gif", o.gif, "Animated GIF to write: one frame per step");
@@ -40,7 +40,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
   r->add_option("--size", o.size, "Frame size WxH (default 1280x800)");
   r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
-  r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree; default the lesson's, else the first)");
+  r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree, lobe; default the lesson's, else the first)");
   return r;
 }
 
@@ -61,8 +61,8 @@ int run_render(const RenderOptions& o) {
     input = read_input_arg(o.input);
   }
   const Numeric numeric = !o.numeric.empty() ? parse_numeric_for(*alg, o.numeric) : lesson ? lesson->numeric : parse_numeric_for(*alg, "double");
-  std::optional<Numeric> compare = lesson ? lesson->compare : std::nullopt;
-  if (!o.compare.empty()) compare = parse_numeric_for(*alg, o.compare);
+  Comparison compare = lesson ? lesson->compare : Comparison{};
+  if (!o.compare.empty()) compare = parse_comparison(*alg, o.compare, numeric);
 
   std::optional<View> view;
   if (!o.view.empty()) {

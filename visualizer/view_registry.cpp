@@ -1,5 +1,6 @@
 #include "view_registry.hpp"
 #include "image_view.hpp"
+#include "lobe_view.hpp"
 #include "orbit_canvas.hpp"
 #include "pixel_canvas.hpp"
 #include "plot_view.hpp"
@@ -21,6 +22,7 @@ constexpr ViewInfo kViews[] = {
     {View::image, "Sweep", "The algorithm run over a grid of inputs, against exact", make_with<ImageCanvas>},
     {View::plot, "Plot", "A column of the table over its rows, against an exact run", make_with<PlotCanvas>},
     {View::tree, "Tree", "The tree's nodes: built so far, the current node, the traversal stack", make_with<TreeCanvas>},
+    {View::lobe, "Lobe", "The term as a polar plot over the eye's directions in the plane of incidence, against the reference", make_with<LobeCanvas>},
 };
 static_assert(std::size(kViews) == kViewNames.size(), "one registry entry per View");
 

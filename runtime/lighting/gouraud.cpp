@@ -5,6 +5,7 @@
 #include <random>
 #include "adapter.hpp"
 #include "lighting/gouraud_vs_phong.hpp"
+#include "lighting/shade_common.hpp"
 #include "lighting/shade_input.hpp"
 
 namespace sw {
@@ -23,7 +24,8 @@ struct GouraudOutput {
 };
 
 struct GouraudSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::params};
+  static std::vector<Param> params() { return shade_params(); }
   using Algo = GouraudVsPhong;
   using Input = ShadedTriangle<Rational>;
   using Output = GouraudOutput;

@@ -61,16 +61,51 @@ template <class Num> struct Prepared {
   bool outside = false;  // a sweep sample off the sphere
 };
 
+// A swept vector, computed in double and rounded to the grid's inputs, so that every mode shades
+// the same vector.
+Vec3<Rational> sweep_vector(const SweepGrid& g, const Vec3<double>& v) {
+  auto in = [&](double x) { return num::to_rational(g.inputs == Numeric::f32 ? double(float(x)) : x); };
+  return {in(v.x), in(v.y), in(v.z)};
+}
+
 // The image view's sweep: sample (i, j) of the grid is the point (x, y) of a unit sphere seen from
-// +z, whose normal (x, y, sqrt(1 - x^2 - y^2)) is computed in double and rounded to the grid's
-// inputs (so every mode shades the same normal); off the sphere: none.
+// +z, whose normal is (x, y, sqrt(1 - x^2 - y^2)); off the sphere: none.
 std::optional<Vec3<Rational>> sphere_normal(const SweepGrid& g, int i, int j) {
   const double x = g.x(i), y = g.y(j), zz = 1 - x * x - y * y;
   if (!(zz > 0)) return std::nullopt;
-  const double z = std::sqrt(zz);
-  auto in = [&](double v) { return num::to_rational(g.inputs == Numeric::f32 ? double(float(v)) : v); };
-  return Vec3<Rational>{in(x), in(y), in(z)};
+  return sweep_vector(g, {x, y, std::sqrt(zz)});
 }
+
+// The lobe view's plane of incidence, in double: the unit normal u, and the unit tangent t in the
+// plane of n and l pointing away from the light (towards the mirror direction). A light along the
+// normal leaves the plane free: then the eye's side, else any tangent.
+struct IncidencePlane {
+  Vec3<double> u, t;
+  static IncidencePlane of(const ModelInput& in) {
+    auto d3 = [](const Vec3<Rational>& v) { return lighting::unit(Vec3<double>{v.x.get_d(), v.y.get_d(), v.z.get_d()}); };
+    const Vec3<double> u = d3(in.n);
+    auto tangent = [&](const Vec3<double>& v, double sign) -> std::optional<Vec3<double>> {
+      const Vec3<double> w = v - dot(v, u) * u;
+      if (!(dot(w, w) > 1e-20)) return std::nullopt;
+      return lighting::unit(sign * w);
+    };
+    const auto t = tangent(d3(in.l), -1);
+    if (t) return {u, *t};
+    if (const auto te = tangent(d3(in.e), 1)) return {u, *te};
+    return {u, *tangent(std::fabs(u.x) < 0.9 ? Vec3<double>{1, 0, 0} : Vec3<double>{0, 1, 0}, 1)};
+  }
+  // The direction at `deg` degrees from the normal, positive towards the mirror side.
+  Vec3<double> at(double deg) const {
+    const double a = deg * (3.141592653589793 / 180);
+    return std::cos(a) * u + std::sin(a) * t;
+  }
+  // A direction's angle in the plane, or NaN if it leaves the plane by more than 1e-9 of its length.
+  double angle(const Vec3<double>& v) const {
+    const Vec3<double> w = lighting::unit(v), b = cross(u, t);
+    if (std::fabs(dot(w, b)) > 1e-9) return NAN;
+    return std::atan2(dot(w, t), dot(w, u)) * (180 / 3.141592653589793);
+  }
+};
 
 // |got - ref| in units in the last place of the mode at ref (ref's exponent, at least the mode's
 // smallest normal one); 0 where both are 0; in ulps of 1 where only ref is 0 (a term that should
@@ -100,13 +135,26 @@ Vec3<double> vec_of(const lighting_oracle::OracleTerm& o, const char* k) {
   return {at(".x"), at(".y"), at(".z")};
 }
 
+// The sliders: each shows when the input has its key (toon's k or sigma with its diffuse model).
+std::vector<Param> model_params() {
+  return {{"/k", "k", 0, 1, false, "Minnaert's darkening exponent: 1 is Lambert, lower darkens the limb less"},
+          {"/sigma", "sigma", 0, 1, false, "Oren-Nayar's slope spread in radians: 0 is Lambert"},
+          {"/cutoff", "cutoff", 0, 1, false, "toon: the diffuse value at which the band switches"},
+          {"/shininess", "shininess", 0, 10000, true, "the highlight exponent n"},
+          {"/m", "m", 0.001, 1, true, "the RMS slope of the microfacets: lower is glossier"},
+          {"/ior", "ior", 1, 3, false, "the index of refraction in the Fresnel term"}};
+}
+
 template <class A> struct ModelSpec {
   using Algo = A;
-  static constexpr std::array hooks{Hook::error, Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_shaded};
+  static constexpr std::array hooks{Hook::error,      Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_shaded,
+                                    Hook::lobe,       Hook::params,  Hook::compare_group};
   using Input = ModelInput;
   using Output = ModelOutput;
   static constexpr std::string_view family = "lighting";
-  static constexpr std::array views{View::orbit3d, View::image};
+  static constexpr std::array views{View::orbit3d, View::image, View::lobe};
+  static constexpr std::string_view compare_group = "reflection models";
+  static std::vector<Param> params() { return model_params(); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static const std::string example;
   static Input parse(const Json& j, Numeric) { return lighting_io::parse_model_input(Algo::id, j); }
@@ -130,6 +178,25 @@ template <class A> struct ModelSpec {
   }
   static Json sweep_input(Json j, const Input&, const SweepGrid& g, int i, int k) {
     if (const auto n = sphere_normal(g, i, k)) j["n"] = {n->x.get_d(), n->y.get_d(), n->z.get_d()};
+    return j;
+  }
+  // The lobe view: the eye swept over the plane of incidence, n and l as given.
+  template <class Num> static auto lobe_sweeper(const Input& base, const SweepGrid& g) {
+    return [base, g, plane = IncidencePlane::of(base)](int i, int, Prepared<Num>& p) {
+      Input in = base;
+      in.e = sweep_vector(g, plane.at(g.x(i)));
+      lighting_io::decide(in);
+      p = prepare<Num>(in);
+    };
+  }
+  static std::optional<std::array<double, 2>> lobe_angles(const Input& in) {
+    auto d3 = [](const Vec3<Rational>& v) { return Vec3<double>{v.x.get_d(), v.y.get_d(), v.z.get_d()}; };
+    const IncidencePlane plane = IncidencePlane::of(in);
+    return std::array{plane.angle(d3(in.l)), plane.angle(d3(in.e))};
+  }
+  static Json lobe_input(Json j, const Input& in, const SweepGrid& g, int i) {
+    const Vec3<Rational> e = sweep_vector(g, IncidencePlane::of(in).at(g.x(i)));
+    j["e"] = {e.x.get_d(), e.y.get_d(), e.z.get_d()};
     return j;
   }
   static float sweep_value(const Output& o) { return o.outside ? NAN : static_cast<float>(o.value); }

@@ -31,7 +31,8 @@ ShadeOutput from_oracle(const ShadeScene<Rational>& in, const oracle::ShadeResul
 }
 
 struct ShadeSpec {
-  static constexpr std::array hooks{Hook::error, Hook::handles};
+  static constexpr std::array hooks{Hook::error, Hook::handles, Hook::params};
+  static std::vector<Param> params() { return shade_params(); }
   using Algo = Shade;
   using Input = ShadeScene<Rational>;
   using Output = ShadeOutput;

@@ -6,6 +6,17 @@
 
 namespace sw::lighting {
 
+std::vector<Param> shade_params() {
+  return {{"/material/shininess", "shininess", 0, 128, true, "the highlight exponent (GL's range is 0 to 128)"},
+          {"/material/minnaert_k", "k", 0, 1, false, "Minnaert's darkening exponent: 1 is Lambert"},
+          {"/material/sigma", "sigma", 0, 1, false, "Oren-Nayar's slope spread in radians: 0 is Lambert"},
+          {"/material/m", "m", 0.001, 1, true, "the RMS slope of the microfacets"},
+          {"/material/ior", "ior", 1, 3, false, "the index of refraction in the Fresnel term"},
+          {"/material/toon", "toon", 0, 1, false, "the diffuse value at which the toon band switches"},
+          {"/lights/0/cutoff", "light 0 cut-off", 0, 90, false, "the first light's spot cut-off in degrees"},
+          {"/lights/0/exponent", "light 0 exponent", 0, 128, false, "the first light's spot exponent"}};
+}
+
 Json shade_json(const ShadeOutput& o) {
   auto clamp = [](double x) { return x < 0 ? 0.0 : x > 1 ? 1.0 : x; };
   Json lights = Json::array();

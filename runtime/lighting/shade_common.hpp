@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <vector>
+#include "catalog.hpp"
 #include "input.hpp"
 #include "lighting/shade.hpp"
 
@@ -37,6 +38,9 @@ template <class Num> ShadeOutput shade_output(const Shaded<Num>& s) {
 }
 
 Json shade_json(const ShadeOutput& o);
+// The sliders of shade and gouraud-vs-phong: the material's parameters and the first light's cone,
+// each shown when the input has its key.
+std::vector<Param> shade_params();
 // max_k |got.rgb[k] - ref[k]| in units of 2^-bits (the mode's ulp at 1; colours are about 1).
 double shade_error(const ShadeOutput& got, const ShadeOutput& ref);
 
