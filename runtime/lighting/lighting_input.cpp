@@ -122,6 +122,46 @@ ModelInput parse_model_input(std::string_view id, const Json& j) {
   return in;
 }
 
+namespace {
+
+// sign(alpha sqrt(x) + gamma), x >= 0, exactly: against the other sign, compare the squares.
+int sign_root(const Rational& alpha, const Rational& x, const Rational& gamma) {
+  const int sa = sgn(x) == 0 ? 0 : sgn(alpha), sg = sgn(gamma);
+  if (sa == 0 || sg == 0 || sa == sg) return sa != 0 ? sa : sg;
+  return sa * sgn(Rational(alpha * alpha * x - gamma * gamma));
+}
+
+// sign(alpha sqrt(x) + beta sqrt(y) + gamma), x, y >= 0, exactly. p = alpha sqrt(x) + beta sqrt(y)
+// has a sign by the same rule; against gamma of the other sign, p^2 - gamma^2 = alpha^2 x + beta^2 y
+// - gamma^2 + 2 alpha beta sqrt(x y) has one root.
+int sign_roots(const Rational& alpha, const Rational& x, const Rational& beta, const Rational& y, const Rational& gamma) {
+  const int sa = sgn(x) == 0 ? 0 : sgn(alpha), sb = sgn(y) == 0 ? 0 : sgn(beta);
+  const int sp = sa == 0 || sb == 0 || sa == sb ? (sa != 0 ? sa : sb) : sa * sgn(Rational(alpha * alpha * x - beta * beta * y));
+  const int sg = sgn(gamma);
+  if (sp == 0 || sg == 0 || sp == sg) return sp != 0 ? sp : sg;
+  return sp * sign_root(2 * alpha * beta, Rational(x * y), Rational(alpha * alpha * x + beta * beta * y - gamma * gamma));
+}
+
+// Oren-Nayar's d >= c exactly, on the raw vectors (lit and seen: N.L, N.E > 0). With unit cosines
+// a = n.l, b = n.e and g = l.e - ab, d = a A (g <= 0), a A + B g (a >= b), a A + B a g / b (a < b),
+// each multiplied out by a positive factor into a sum of square roots of rationals:
+//   g <= 0:  A NL - c sqrt(NN LL) >= 0
+//   a >= b:  A NL sqrt(NN EE) - c NN sqrt(LL EE) + B (LE NN - NL NE) >= 0     (times NN sqrt(LL EE))
+//   a < b:   A NL NE sqrt(NN LL) + B NL (LE NN - NL NE) - c NN LL NE >= 0      (times NN LL NE)
+// with NL = N.L, NN = N.N and so on. A and B are the model's rationals in sigma^2.
+bool oren_nayar_above(const ModelInput& in, const Rational& c) {
+  const Rational s2 = in.p.sigma * in.p.sigma;
+  const Rational A = 1 - Rational(1, 2) * s2 / (s2 + Rational(33, 100)), B = Rational(45, 100) * s2 / (s2 + Rational(9, 100));
+  const Rational NL = dot(in.n, in.l), NE = dot(in.n, in.e), LE = dot(in.l, in.e);
+  const Rational NN = dot(in.n, in.n), LL = dot(in.l, in.l), EE = dot(in.e, in.e);
+  const Rational G = LE * NN - NL * NE;  // g times NN sqrt(LL EE)
+  if (sgn(G) <= 0) return sign_root(-c, Rational(NN * LL), Rational(A * NL)) >= 0;
+  if (NL * NL * EE >= NE * NE * LL) return sign_roots(A * NL, Rational(NN * EE), -c * NN, Rational(LL * EE), Rational(B * G)) >= 0;
+  return sign_root(A * NL * NE, Rational(NN * LL), Rational(B * NL * G - c * NN * LL * NE)) >= 0;
+}
+
+}  // namespace
+
 void decide(ModelInput& in) {
   in.signs = frame_signs(in.n, in.l, in.e);
   in.p.toon_above.reset();
@@ -134,6 +174,12 @@ void decide(ModelInput& in) {
     in.p.toon_above = nl * nl >= c * c * dot(in.n, in.n) * dot(in.l, in.l);
     return;
   }
+  if (in.choice.diffuse == DiffuseModel::oren_nayar) {
+    in.p.toon_above = oren_nayar_above(in, c);
+    return;
+  }
+  // Minnaert with k != 1: (n.l)^k (n.e)^(k-1) with k a rational of up to 64-bit terms is not a
+  // polynomial sign; decided on the 300-bit reference value (docs/lighting/semantics.md).
   NoProbe none;
   const Frame<Rational> f = shading_frame<Toon>(in.n, in.l, in.e, none, in.signs);
   in.p.toon_above = !(diffuse_nested(in.choice.diffuse, f, in.p, none) < c);
