@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "stepwise: error: " << e.what() << '\n';
+    std::cerr << "stepwise: error: " << one_line(e.what()) << '\n';
     return 2;
   }
 
@@ -139,8 +139,7 @@ int main(int argc, char** argv) {
     if (*run) {
       const Algorithm& alg = find_algorithm(alg_id);
       const Numeric n = parse_numeric_for(alg, numeric);
-      std::ifstream in(inputs_path);
-      if (!in) throw InputError("cannot read inputs file '" + inputs_path + "'");
+      std::ifstream in = open_input_file(inputs_path, "inputs file");
       write_output(out_path, [&](std::ostream& os) { run_batch(alg, n, in, os); });
       return 0;
     }
@@ -149,11 +148,10 @@ int main(int argc, char** argv) {
       if (trace_path == "-") {
         rep = check_trace(std::cin, decisions_only);
       } else {
-        std::ifstream in(trace_path);
-        if (!in) throw InputError("cannot read trace file '" + trace_path + "'");
+        std::ifstream in = open_input_file(trace_path, "trace file");
         rep = check_trace(in, decisions_only);
       }
-      (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << rep.message << '\n';
+      (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << one_line(rep.message, 2000) << '\n';
       return rep.status;
     }
     if (*bench) {
@@ -171,11 +169,8 @@ int main(int argc, char** argv) {
       print_bench(alg, rows, json);
       return 0;
     }
-  } catch (const InputError& e) {
-    std::cerr << "stepwise: error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "stepwise: error: " << e.what() << '\n';
+  } catch (const std::exception& e) {  // InputError and anything else: one line, exit 2
+    std::cerr << "stepwise: error: " << one_line(e.what()) << '\n';
     return 2;
   }
   return 0;

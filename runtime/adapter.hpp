@@ -278,6 +278,9 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
   a.example = Spec::example;
   auto result = [](const auto& out, Numeric n, bool fell_back) {
     Json r = Spec::to_json(out);
+    // A rounded mode that produced NaN or an infinity failed; the result says so, whatever else
+    // the Spec reports (docs/trace-format.md).
+    if (encode_nonfinite(r) && r.is_object() && !r.contains("failure")) r["failure"] = "nan-or-inf";
     if (n == Numeric::filtered) r["fallback"] = fell_back;
     return r;
   };
@@ -321,7 +324,11 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
       os << Json{{"result", result(out, n, fb)}}.dump() << '\n';
     }
   };
-  a.oracle = [](const Json& j) { return Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact))); };
+  a.oracle = [](const Json& j) {
+    Json r = Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact)));
+    encode_nonfinite(r);
+    return r;
+  };
   if constexpr (names_hook<Spec>(Hook::canonical)) a.canonical = [](const Json& r) { return Spec::canonical(r); };
   else a.canonical = [](const Json& r) { return r; };
   a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };

@@ -26,14 +26,14 @@ const Algorithm& find_algorithm(std::string_view id) {
     if (a.id == id) return a;
   std::string known;
   for (const Algorithm& a : catalog()) known += (known.empty() ? "" : ", ") + std::string(a.id);
-  throw InputError("unknown algorithm '" + std::string(id) + "' (known: " + known + ")");
+  throw InputError("unknown algorithm '" + one_line(id, 60) + "' (known: " + known + ")");
 }
 
 Numeric parse_numeric_for(const Algorithm& alg, std::string_view name) {
   std::string modes;
   for (Numeric n : alg.numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
   auto n = parse_numeric(name);
-  if (!n) throw InputError("unknown numeric mode '" + std::string(name) + "' (known: float, double, int, filtered, exact, reference)");
+  if (!n) throw InputError("unknown numeric mode '" + one_line(name, 60) + "' (known: float, double, int, filtered, exact, reference)");
   if (!alg.supports(*n))
     throw InputError(std::string(alg.id) + " does not run on '" + std::string(name) + "' (it runs on: " + modes + ")");
   return *n;

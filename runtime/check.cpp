@@ -194,7 +194,9 @@ void require_step_shape(const Json& j, std::size_t lineno) {
     std::size_t kinds = 0;
     for (auto it = item.begin(); it != item.end(); ++it) {
       if (!is_modifier(it.key())) ++kinds;
-      else if (it.key() == "value") (void)parse_rational(*it, "line " + std::to_string(lineno) + ": geometry value");
+      else if (it.key() == "value") {
+        if (!(it->is_string() && is_nonfinite_text(it->get<std::string>()))) (void)parse_rational(*it, "line " + std::to_string(lineno) + ": geometry value");
+      }
       else if (!it->is_string() || (it.key() == "life" && !parse_life(it->get<std::string>()))) bad("a geometry label or life that is not one of its strings");
     }
     if (kinds != 1) bad("a geometry item with other than one kind key");
@@ -203,7 +205,7 @@ void require_step_shape(const Json& j, std::size_t lineno) {
   // of 2 or 3), or a colour {"rgb": [r, g, b]}.
   auto number = [&](const Json& v, const std::string& what) {
     if (!v.is_number() && !v.is_string()) bad("a variable that is neither a number, a \"p/q\" string nor a vector of them");
-    if (v.is_string()) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what);
+    if (v.is_string() && !is_nonfinite_text(v.get<std::string>())) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what);
   };
   for (auto it = j["vars"].begin(); it != j["vars"].end(); ++it) {
     const Json* list = &*it;

@@ -1,34 +1,122 @@
 #include "input.hpp"
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace sw {
 
+bool encode_nonfinite(Json& root) {
+  bool any = false;
+  std::vector<Json*> todo{&root};  // no recursion: results may be deep
+  while (!todo.empty()) {
+    Json* j = todo.back();
+    todo.pop_back();
+    if (j->is_number_float() && !std::isfinite(j->get<double>())) {
+      const double d = j->get<double>();
+      *j = std::isnan(d) ? "NaN" : d > 0 ? "Infinity" : "-Infinity";
+      any = true;
+    } else if (j->is_structured()) {
+      for (Json& c : *j) todo.push_back(&c);
+    }
+  }
+  return any;
+}
+
+bool is_nonfinite_text(std::string_view s) { return s == "NaN" || s == "Infinity" || s == "-Infinity"; }
+
 Json parse_json_text(std::string_view text, std::string_view what) {
+  const std::string w(what);
+  if (text.size() > kMaxJsonBytes) throw InputError(w + ": " + std::to_string(text.size()) + " bytes of JSON, more than the " + std::to_string(kMaxJsonBytes >> 20) + " MiB allowed");
+  // Before the parser: a NUL byte (which would end the text early) and the nesting depth.
+  std::size_t depth = 0;
+  bool in_string = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\0') throw InputError(w + ": a NUL byte at offset " + std::to_string(i));
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth) throw InputError(w + ": nested more than " + std::to_string(kMaxJsonDepth) + " levels deep");
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  // The parser itself: duplicate keys are refused, not silently merged.
+  std::vector<std::vector<std::string>> keys;
+  auto strict = [&](int, Json::parse_event_t event, Json& parsed) {
+    if (event == Json::parse_event_t::object_start) keys.emplace_back();
+    else if (event == Json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    else if (event == Json::parse_event_t::key && !keys.empty()) {
+      const std::string k = parsed.get<std::string>();
+      if (std::find(keys.back().begin(), keys.back().end(), k) != keys.back().end()) throw InputError(w + ": duplicate key \"" + k + "\"");
+      keys.back().push_back(k);
+    }
+    return true;
+  };
   try {
-    return Json::parse(text.begin(), text.end());
+    return Json::parse(text.begin(), text.end(), strict);
   } catch (const Json::parse_error& e) {
     // Keep nlohmann's position and reason, drop its "[json.exception...]" prefix.
     std::string why = e.what();
     const auto at = why.find("parse error");
     why = at == std::string::npos ? why : why.substr(at);
-    throw InputError(std::string(what) + ": malformed JSON (" + why + ")");
+    throw InputError(w + ": malformed JSON (" + why + ")");
+  } catch (const Json::out_of_range&) {
+    throw InputError(w + ": a number overflows double (write large or exact values as \"p/q\" strings)");
   }
+}
+
+std::ifstream open_input_file(const std::string& path, std::string_view what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(std::string(what) + " '" + path + "' is a directory");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError("cannot read " + std::string(what) + " '" + path + "'");
+  return f;
 }
 
 Json read_input_arg(const std::string& arg) {
   const auto first = arg.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && (arg[first] == '{' || arg[first] == '[')) return parse_json_text(arg, "input");
-  std::ifstream f(arg, std::ios::binary);
-  if (!f) throw InputError("cannot read input file '" + arg + "'");
-  std::ostringstream s;
-  s << f.rdbuf();
-  return parse_json_text(s.str(), "input file '" + arg + "'");
+  std::ifstream f = open_input_file(arg, "input file");
+  std::string text;
+  char buf[1 << 16];
+  while (f.read(buf, sizeof buf) || f.gcount() > 0) {  // a FIFO has no size: read in blocks, bounded
+    text.append(buf, static_cast<std::size_t>(f.gcount()));
+    if (text.size() > kMaxJsonBytes) throw InputError("input file '" + arg + "': more than " + std::to_string(kMaxJsonBytes >> 20) + " MiB");
+  }
+  return parse_json_text(text, "input file '" + arg + "'");
+}
+
+std::string one_line(std::string_view message, std::size_t max) {
+  std::string out;
+  for (unsigned char c : message) {
+    if (out.size() >= max) {
+      out += "...";
+      break;
+    }
+    if (c == '\n') out += "\\n";
+    else if (c == '\t') out += "\\t";
+    else if (c == '\r') out += "\\r";
+    else if (c < 0x20 || c == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
 }
 
 static Rational parse_decimal_or_fraction(const std::string& s, const std::string& what) {
-  auto bad = [&] { return InputError(what + ": '" + s + "' is not a number or an exact \"p/q\""); };
+  auto bad = [&] { return InputError(what + ": '" + one_line(s, 60) + "' is not a number or an exact \"p/q\""); };
   if (s.empty() || s.size() > 4096) throw bad();
   const auto slash = s.find('/');
   auto digits_ok = [](std::string_view t, bool allow_point) {
@@ -94,7 +182,7 @@ void only_keys_optional(const Json& obj, std::initializer_list<const char*> keys
     bool known = false;
     for (const char* k : keys) known = known || it.key() == k;
     for (const char* k : optional) known = known || it.key() == k;
-    if (!known) throw InputError(what + ": unknown field \"" + it.key() + "\"");
+    if (!known) throw InputError(what + ": unknown field \"" + one_line(it.key(), 60) + "\"");
   }
   for (const char* k : keys) (void)require(obj, k, what);
 }

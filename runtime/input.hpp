@@ -1,6 +1,7 @@
 // Reading inputs: JSON numbers or exact "p/q" strings, checked for finiteness and bounds. Every
 // failure throws InputError with one line that names the problem.
 #pragma once
+#include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -17,10 +18,26 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Parses JSON text; malformed text throws InputError naming `what`.
+// JSON has no token for NaN or the infinities: results and traces write them as the strings "NaN",
+// "Infinity" and "-Infinity" (docs/trace-format.md), and readers of traces accept those.
+// Returns whether it replaced any.
+bool encode_nonfinite(Json& j);
+bool is_nonfinite_text(std::string_view s);
+
+// The readers' bounds (docs/cli.md), checked before any work: JSON text of at most kMaxJsonBytes,
+// nested at most kMaxJsonDepth deep, with no NUL byte, no duplicate key and no number beyond double.
+inline constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+// Parses JSON text within those bounds; anything else throws InputError naming `what`.
 Json parse_json_text(std::string_view text, std::string_view what);
 // An --input argument: JSON text (starting with '{' or '[') or the name of a file holding it.
 Json read_input_arg(const std::string& arg);
+// Opens a file to read, or throws InputError naming `what`: missing, unreadable, a directory.
+std::ifstream open_input_file(const std::string& path, std::string_view what);
+// A message as one line for a terminal: control characters escaped (\n, \t, \xNN), cut to about
+// `max` bytes with "..." (echoed input may be a megabyte long; echo points cut it shorter).
+std::string one_line(std::string_view message, std::size_t max = 1000);
 // A number (finite) or a string "n", "p/q" or a decimal like "-1.25"; `what` names it in errors.
 Rational parse_rational(const Json& v, const std::string& what);
 // obj is an object with exactly these fields: throws "unknown field" or "missing field".

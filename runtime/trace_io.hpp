@@ -9,8 +9,13 @@
 
 namespace sw {
 
-// A file written under a temporary name and renamed into place by commit(). If it is never
-// committed (an error on the way), the temporary is removed: no partial output file.
+// An output file (--out), the way cp and tee treat their target (docs/cli.md):
+// - a new or regular file is written under a temporary name beside it and renamed into place by
+//   commit(); if it is never committed (an error on the way) the temporary is removed, and so it
+//   is on SIGINT or SIGTERM: no partial output file;
+// - a symbolic link is followed: its final target is replaced that way, and the link stays;
+// - a FIFO or a character device (/dev/stdout, /dev/null) is written through, in place;
+// - a directory, a socket or a block device is refused (InputError).
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path target);
@@ -20,7 +25,7 @@ class AtomicFile {
   void commit();
 
  private:
-  std::filesystem::path target_, temp_;
+  std::filesystem::path target_, temp_;  // temp_ empty: written through
   std::ofstream out_;
   bool committed_ = false;
 };

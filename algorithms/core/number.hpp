@@ -112,10 +112,19 @@ template <> struct NumericOf<Interval> { static constexpr Numeric value = Numeri
 template <bool C> struct NumericOf<BasicMag<C>> { static constexpr Numeric value = Numeric::filtered; };
 template <class T> constexpr bool is_filtered = NumericOf<T>::value == Numeric::filtered;
 
-// Lossless JSON text for a value: strings for rationals, numbers otherwise.
+// Lossless JSON text for a value: strings for rationals, numbers otherwise, and the strings "NaN",
+// "Infinity" and "-Infinity" for the non-finite values (JSON has no token for them;
+// docs/trace-format.md).
 template <class T> std::string json_value(const T& x) {
-  if constexpr (std::is_same_v<T, Rational>) return '"' + num::to_text(x) + '"';
-  else return num::to_text(x);
+  if constexpr (std::is_same_v<T, Rational>) {
+    return '"' + num::to_text(x) + '"';
+  } else {
+    std::string t = num::to_text(x);
+    if (t.find("nan") != std::string::npos) return "\"NaN\"";
+    if (t == "inf") return "\"Infinity\"";
+    if (t == "-inf") return "\"-Infinity\"";
+    return t;
+  }
 }
 
 }  // namespace sw

@@ -19,7 +19,7 @@ struct DdaGridWalk {
   X(setup, "for each axis a: step_a <- sign(d_a); tDelta_a <- 1/|d_a|") \
   X(first_exit, "    tMax_a <- (cell_a + step_a/2 - p0_a) / d_a   -- t where we leave the cell along a") \
   X(pick, "loop: t <- min_a tMax_a") \
-  X(test, "    if t >= 1: stop                        -- p1 itself is excluded") \
+  X(test, "    if t >= 1 or a step leaves p1's cell range: stop  -- p1 excluded; the range guards a stalled tMax") \
   X(up, "    for axes with tMax_a = t, step_a > 0: cell_a += 1; tMax_a += tDelta_a") \
   X(visit_up, "    if any moved: visit cell               -- an upward boundary belongs to the new cell") \
   X(down, "    for axes with tMax_a = t, step_a < 0: cell_a -= 1; tMax_a += tDelta_a") \
@@ -41,6 +41,10 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
     return true;
   }
   Pixel cell{num::floor_int(Num(p0.x + Num(0.5))), num::floor_int(Num(p0.y + Num(0.5)))};
+  // Every point p0 + t d with t < 1 lies in a cell between p0's and p1's along each axis, so no
+  // walk steps past p1's cell. Exact arithmetic stops on t >= 1 first; a number type whose tMax
+  // stalls (float, |d| beyond 2^24) stops here instead of running on past p1.
+  const Pixel last{num::floor_int(Num(p1.x + Num(0.5))), num::floor_int(Num(p1.y + Num(0.5)))};
   out.push_back(cell);
   if constexpr (Probe::on) probe.step(L::start, StepKind::visit).idx("i", cell.x).idx("j", cell.y).pixel(cell).point(p0);
   std::array<int, 2> step{num::sign(d.x), num::sign(d.y)};
@@ -63,8 +67,11 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
     const bool hit[2] = {!y_first, !x_first};
     const Num t = hit[0] ? t_max[0] : t_max[1];
     if constexpr (Probe::on) probe.step(L::pick, StepKind::decide).num("t", t).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]).point(p0 + t * d);
-    if (!(t < Num(1))) {
-      if constexpr (Probe::on) probe.step(L::test, StepKind::done).num("t", t);
+    const bool past = (hit[0] && step[0] != 0 && (cell.x + step[0] - last.x) * step[0] > 0) ||
+                      (hit[1] && step[1] != 0 && (cell.y + step[1] - last.y) * step[1] > 0);
+    const bool reached = !(t < Num(1));
+    if (reached || past) {
+      if constexpr (Probe::on) probe.step(L::test, StepKind::done).num("t", t).idx("past_p1", !reached);  // 1: the range guard stopped it
       return true;
     }
     for (int dir : {1, -1}) {

@@ -246,8 +246,6 @@ template <class A> struct ModelSpec {
       j["re"] = 2 * dot3(o.n, o.l) * dot3(o.n, o.e) - dot3(o.l, o.e);
     }
     if (o.failure != Failure::none) j["failure"] = kFailureNames[static_cast<int>(o.failure)];
-    for (auto it = j.begin(); it != j.end(); ++it)  // a NaN is not JSON: shown as text
-      if (it->is_number_float() && !std::isfinite(it->get<double>())) *it = std::to_string(it->get<double>());
     return j;
   }
   static std::size_t ops(const Output&) { return 1; }

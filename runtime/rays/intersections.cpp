@@ -113,10 +113,13 @@ struct RayOutput {
   std::array<double, 3> b{};
   std::vector<double> attr;
   std::shared_ptr<const Exact> exact;  // exact mode (and filtered fallbacks, and the oracle)
+  // A rounded mode said hit but its t is not a finite number > 0 (NaN from a direction of 1e-300,
+  // or 0 from a tiny positive t): by the semantics no hit. Reported, and never equal to exact.
+  bool failed = false;
 
   // Hit or miss, and when both sides are exact, every reported value.
   friend bool operator==(const RayOutput& x, const RayOutput& y) {
-    if (x.hit != y.hit) return false;
+    if (x.hit != y.hit || x.failed != y.failed) return false;
     if (!x.hit || !x.exact || !y.exact) return true;
     return x.exact->t == y.exact->t && x.exact->b == y.exact->b && x.exact->t_near == y.exact->t_near && x.exact->t_far == y.exact->t_far &&
            x.exact->attr == y.exact->attr;
@@ -142,6 +145,7 @@ RayOutput make_output(bool hit, const Num& t, bool t_exact, const std::array<Num
     if constexpr (std::is_same_v<Num, float>) o.bits = 24;
     if (hit) {
       o.t = num::to_double(t);
+      o.failed = !(std::isfinite(o.t) && o.t > 0);
       if (b) o.b = {num::to_double((*b)[0]), num::to_double((*b)[1]), num::to_double((*b)[2])};
       if (tn) o.t_near = num::to_double(*tn), o.t_far = num::to_double(*tf);
       if (attr)
@@ -165,6 +169,7 @@ template <Prim P> Json output_json(const RayOutput& o) {
   if (!o.hit) return j;
   const Exact* e = o.exact.get();
   j["t"] = number_json(o.t, e ? &e->t : nullptr);
+  if (o.failed) j["failure"] = "t-not-finite-positive";  // docs/trace-format.md
   if constexpr (P == Prim::triangle) {
     Json b = Json::array();
     for (int i = 0; i < 3; ++i) b.push_back(number_json(o.b[i], e ? &e->b[i] : nullptr));

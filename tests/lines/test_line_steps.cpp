@@ -242,7 +242,7 @@ Expected walk_expected(const Segment& s) {
   Q t_end = sx == 0 ? t_max(cell, 1) : sy == 0 ? t_max(cell, 0) : std::min(t_max(cell, 0), t_max(cell, 1));
   CHECK(t_end >= 1);
   pick(t_end);
-  e.step(L::test, StepKind::done).var("t", t_end);
+  e.step(L::test, StepKind::done).var("t", t_end).var("past_p1", 0);  // exact: t reaches 1 before the cell range ends
   return e;
 }
 
