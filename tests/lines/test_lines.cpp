@@ -157,7 +157,13 @@ TEST_CASE("float loops stay bounded where float cannot advance", "[lines]") {
   CHECK(f.size() <= 2u * (4u + 3u + 33554434u));
   CHECK(f.size() >= 33554432u / 2);
   INFO("float walk finished by its own test: " << finished << ", cells " << f.size());
-  SUCCEED();
+  // It stops at p1: no cell beyond the range between p0's cell (0, -2^24) and p1's (2, 2^24),
+  // which the range guard on the test line enforces where tMax stalls (it used to run on past p1).
+  CHECK(finished);
+  bool inside = true;
+  for (const Pixel& c : f) inside = inside && c.x >= 0 && c.x <= 2 && c.y >= -16777216 && c.y <= 16777216;
+  CHECK(inside);
+  CHECK(f.back().y <= 16777216);
 }
 
 TEST_CASE("dda-line: every exact step matches its definition", "[lines][steps]") {
