@@ -15,17 +15,24 @@ using namespace sw;
 
 namespace {
 
-// Writes through `body` to a file atomically, or streams to stdout for "" or "-". Bodies
-// validate their input before writing anything, so stdout never gets a partial trace.
-template <class F> void write_output(const std::string& path, F&& body) {
+// Writes through `body` to a file atomically, or streams to stdout for "" or "-", at most
+// max_output bytes. Bodies validate their input and its budget before writing anything.
+template <class F> void write_output(const std::string& path, std::uint64_t max_output, F&& body) {
   if (path.empty() || path == "-") {
-    body(static_cast<std::ostream&>(std::cout));
+    BudgetedStream out(std::cout, max_output);
+    body(static_cast<std::ostream&>(out));
     std::cout.flush();
     return;
   }
   AtomicFile file(path);
-  body(file.stream());
+  BudgetedStream out(file.stream(), max_output);
+  body(static_cast<std::ostream&>(out));
   file.commit();
+}
+
+void add_budget_options(CLI::App* cmd, Budget& b) {
+  cmd->add_option("--max-steps", b.max_steps, "Refuse inputs that imply more steps (default 4000000)");
+  cmd->add_option("--max-output", b.max_output, "Stop and write nothing past this many bytes (default 1073741824)");
 }
 
 void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool json) {
@@ -65,6 +72,7 @@ int main(int argc, char** argv) {
   std::string alg_id, input_arg, numeric = "double", out_path, inputs_path, trace_path;
   bool decisions_only = false, json = false;
   int repeats = 3;
+  Budget budget;
   std::vector<std::string> bench_numerics;
   std::string bench_set;
 
@@ -73,12 +81,14 @@ int main(int argc, char** argv) {
   trace->add_option("--input", input_arg, "Input as JSON text or a file holding it")->required();
   trace->add_option("--numeric", numeric, "float | double | int | filtered | exact | reference");
   trace->add_option("--out", out_path, "Output file (default: standard output)");
+  add_budget_options(trace, budget);
 
   auto* run = app.add_subcommand("run", "Run a batch of inputs untraced: one result line per input line");
   run->add_option("algorithm", alg_id, "Algorithm id")->required();
   run->add_option("--inputs", inputs_path, "JSONL file, one input per line")->required();
   run->add_option("--numeric", numeric, "float | double | int | filtered | exact | reference");
   run->add_option("--out", out_path, "Output file (default: standard output)");
+  add_budget_options(run, budget);
 
   auto* check = app.add_subcommand("check", "Replay a trace against the exact oracle; exit 0 agree, 1 diverge, 2 malformed");
   check->add_option("trace", trace_path, "Trace file (JSONL), or - for standard input")->required();
@@ -132,7 +142,9 @@ int main(int argc, char** argv) {
       const Algorithm& alg = find_algorithm(alg_id);
       const Numeric n = parse_numeric_for(alg, numeric);
       const Json input = read_input_arg(input_arg);
-      write_output(out_path, [&](std::ostream& os) { write_trace(alg, n, input, os); });
+      alg.validate(input, n);
+      check_budget(alg, input, n, budget);
+      write_output(out_path, budget.max_output, [&](std::ostream& os) { write_trace(alg, n, input, os); });
       if (!out_path.empty() && out_path != "-") std::cerr << "stepwise: wrote trace to " << out_path << '\n';
       return 0;
     }
@@ -140,7 +152,7 @@ int main(int argc, char** argv) {
       const Algorithm& alg = find_algorithm(alg_id);
       const Numeric n = parse_numeric_for(alg, numeric);
       std::ifstream in = open_input_file(inputs_path, "inputs file");
-      write_output(out_path, [&](std::ostream& os) { run_batch(alg, n, in, os); });
+      write_output(out_path, budget.max_output, [&](std::ostream& os) { run_batch(alg, n, in, os, budget); });
       return 0;
     }
     if (*check) {

@@ -285,6 +285,7 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
     return r;
   };
   a.validate = [](const Json& j, Numeric n) { (void)Spec::parse(j, n); };
+  if constexpr (names_hook<Spec>(Hook::estimate_steps)) a.estimate_steps = [](const Json& j, Numeric n) { return std::size_t(Spec::estimate_steps(Spec::parse(j, n))); };
   a.run = [=](const Json& j, Numeric n) {
     bool fb;
     auto out = compute_mode<Spec>(Spec::parse(j, n), n, [](auto, auto&& compute) {

@@ -75,6 +75,8 @@ struct Algorithm {
   // number of steps (the result itself is held once, as the algorithm's output).
   std::function<void(const Json& input, Numeric, std::ostream& out)> stream;
   std::function<Json(const Json& input, Numeric)> run;  // untraced
+  // An upper estimate of the steps a run takes (empty if the Spec gives none); the work budget.
+  std::function<std::size_t(const Json& input, Numeric)> estimate_steps;
   // The independent exact oracle's result for this input (brute force, oracle/).
   std::function<Json(const Json& input)> oracle;
   // A result in the form the oracle states it (sorted, for results the oracle gives as a set).

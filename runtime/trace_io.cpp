@@ -98,6 +98,37 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+void check_budget(const Algorithm& alg, const Json& input, Numeric n, const Budget& budget) {
+  if (!alg.estimate_steps) return;
+  const std::size_t steps = alg.estimate_steps(input, n);
+  if (steps > budget.max_steps)
+    throw InputError("this input implies up to " + std::to_string(steps) + " steps, more than the budget of " + std::to_string(budget.max_steps) +
+                     " (--max-steps raises it)");
+}
+
+BudgetedStream::BudgetedStream(std::ostream& out, std::uint64_t max) : std::ostream(&buf_) {
+  buf_.out = &out, buf_.max = max;
+  exceptions(std::ios::badbit);  // the budget's InputError passes through
+}
+
+void BudgetedStream::Buf::count(std::streamsize n) {
+  written += std::uint64_t(n);
+  if (written > max) throw InputError("the output passes the budget of " + std::to_string(max) + " bytes (--max-output raises it)");
+}
+
+BudgetedStream::Buf::int_type BudgetedStream::Buf::overflow(int_type c) {
+  if (c == traits_type::eof()) return c;
+  count(1);
+  out->put(char(c));
+  return c;
+}
+
+std::streamsize BudgetedStream::Buf::xsputn(const char* s, std::streamsize n) {
+  count(n);
+  out->write(s, n);
+  return n;
+}
+
 std::string trace_schema() {
   using OJ = nlohmann::ordered_json;
   const OJ number = {{"$ref", "#/$defs/number"}};
@@ -182,7 +213,7 @@ void write_trace(const Algorithm& alg, Numeric n, const Json& input, std::ostrea
   alg.stream(input, n, out);
 }
 
-std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::ostream& out) {
+std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::ostream& out, const Budget& budget) {
   std::vector<Json> inputs;
   std::string line;
   for (std::size_t k = 1; std::getline(in, line); ++k) {
@@ -190,6 +221,7 @@ std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::os
     try {
       Json j = parse_json_text(line, "input");
       alg.validate(j, n);
+      check_budget(alg, j, n, budget);
       inputs.push_back(std::move(j));
     } catch (const InputError& e) {
       throw InputError("line " + std::to_string(k) + ": " + e.what());

@@ -1,5 +1,6 @@
 // Trace files (docs/trace-format.md): writing them atomically, running batches, and `check`.
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <istream>
@@ -30,6 +31,32 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// The work budget of trace, run and render (docs/cli.md): the steps an input implies, estimated
+// before running (Algorithm::estimate_steps), and the bytes written. The defaults keep the largest
+// accepted input within about 10 s and 1 GB on a 2-core machine.
+struct Budget {
+  std::uint64_t max_steps = 4'000'000;
+  std::uint64_t max_output = std::uint64_t{1} << 30;
+};
+// Throws InputError naming the estimate, the budget and the flag that raises it.
+void check_budget(const Algorithm& alg, const Json& input, Numeric n, const Budget& budget);
+
+// A stream that passes bytes on to `out` and throws InputError once more than `max` have passed
+// (naming --max-output). The caller's AtomicFile then leaves no file behind.
+class BudgetedStream : public std::ostream {
+ public:
+  BudgetedStream(std::ostream& out, std::uint64_t max);
+
+ private:
+  struct Buf : std::streambuf {
+    std::ostream* out = nullptr;
+    std::uint64_t max = 0, written = 0;
+    int_type overflow(int_type c) override;
+    std::streamsize xsputn(const char* s, std::streamsize n) override;
+    void count(std::streamsize n);
+  } buf_;
+};
+
 // The JSON schema of a trace line (docs/trace.schema.json is this, written by `stepwise schema`),
 // derived from the step kinds, the geometry table and the numeric modes.
 std::string trace_schema();
@@ -42,7 +69,8 @@ void write_trace(const Algorithm& alg, Numeric n, const Json& input, std::ostrea
 
 // Reads one input per line (blank lines skipped), validates them all, then writes one result per
 // line. Throws InputError("line K: ...") before writing anything if any input is bad.
-std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& inputs, std::ostream& out);
+// Each input's budget is checked with the rest, before any result.
+std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& inputs, std::ostream& out, const Budget& budget = {});
 
 // How closely `check` holds the numbers of a trace in mode n to the replay's, relative to
 // 1 + |expected| (docs/trace-format.md): exact and int 0, float 2^-10, double and filtered 2^-36,

@@ -125,7 +125,7 @@ TEST_CASE("reliability: SIGTERM during a long write leaves no temporary file", "
   const pid_t pid = ::fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {
-    ::execl(SW_STEPWISE_EXE, SW_STEPWISE_EXE, "trace", "dda-grid-walk", "--input", "{\"p0\":[0,0],\"p1\":[16000000,7000001]}", "--out", out.c_str(),
+    ::execl(SW_STEPWISE_EXE, SW_STEPWISE_EXE, "trace", "dda-grid-walk", "--input", "{\"p0\":[0,0],\"p1\":[16000000,7000001]}", "--max-steps", "100000000", "--out", out.c_str(),
             static_cast<char*>(nullptr));
     ::_exit(127);
   }

@@ -40,6 +40,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
   r->add_option("--size", o.size, "Frame size WxH (default 1280x800)");
   r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
+  r->add_option("--max-steps", o.max_steps, "Refuse inputs that imply more steps (default 4000000)");
   r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree, lobe; default the lesson's, else the first)");
   return r;
 }
@@ -74,6 +75,10 @@ int run_render(const RenderOptions& o) {
     }
   }
 
+  Budget budget;
+  budget.max_steps = o.max_steps;
+  alg->validate(input, numeric);
+  check_budget(*alg, input, numeric, budget);
   HeadlessHost host(w, h);
   App& app = host.app();
   const bool ok = lesson ? app.open_lesson(o.lesson) : app.open_algorithm(*alg, input, numeric, compare);

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include "trace_io.hpp"
 
 namespace sw::vis {
 
@@ -14,6 +15,7 @@ struct RenderOptions {
   std::optional<std::size_t> step, from, to;
   int delay_ms = 250;
   bool focus = false;
+  std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
 };
 
 // Adds the subcommand; main calls run_render when it was given.
