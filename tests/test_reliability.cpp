@@ -143,3 +143,22 @@ TEST_CASE("reliability: SIGTERM during a long write leaves no temporary file", "
   CHECK(WTERMSIG(status) == SIGTERM);
   CHECK(entries(dir) == 0);
 }
+
+TEST_CASE("reliability: the work budget refuses what it estimates too large, and the output budget leaves no file", "[cli][reliability][budget]") {
+  const auto dir = scratch("budget");
+  const auto out = dir / "never.jsonl";
+  const std::string longest = "'{\"p0\":[-16777216,-16777215.75],\"p1\":[16777216,16777215.5]}'";
+  const auto t = run_stepwise("trace dda-grid-walk --numeric float --input " + longest + " --out " + sh_quote(out.string()));
+  CHECK(t.status == 2);
+  CHECK(lines_in(t.err) == 1);
+  CHECK(t.err.find("201326608 steps, more than the budget of 4000000 (--max-steps raises it)") != std::string::npos);
+  std::ofstream(dir / "in.jsonl") << "{\"p0\":[0,0],\"p1\":[3,1]}\n" << longest.substr(1, longest.size() - 2) << "\n";
+  const auto r = run_stepwise("run dda-grid-walk --inputs " + sh_quote((dir / "in.jsonl").string()) + " --out " + sh_quote(out.string()));
+  CHECK(r.status == 2);
+  CHECK(r.err.find("line 2: this input implies") != std::string::npos);
+  // Raised, the same kind of input runs.
+  CHECK(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0,0],\"p1\":[3000000,2000000]}' --max-steps 20000000 --max-output 1000 --out " + sh_quote(out.string())).err.find(
+            "the output passes the budget of 1000 bytes (--max-output raises it)") != std::string::npos);
+  CHECK(entries(dir) == 1);  // in.jsonl only: no output, no temporary
+  CHECK(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0,0],\"p1\":[30,20]}' --out " + sh_quote(out.string())).status == 0);
+}
