@@ -85,6 +85,7 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
   // The scale: the outer ring is a round value at or above both curves' peak within 80 degrees
   // of the normal (and the other canvas's, side by side, so that two models share it).
   const double peak = std::max(peak_, other_peak_);
+  other_peak_ = 0;  // follow() sets it again every frame while side by side
   full_ = peak > 0 ? nice_ceil(peak) : 1;
   const float label_h = ImGui::GetTextLineHeight();
   centre_ = ImVec2(origin.x + size.x / 2, end.y - 2 * label_h - 8);
