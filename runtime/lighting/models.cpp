@@ -6,6 +6,7 @@
 // formulas). A float result that is NaN or infinite, negative, or above 1 for a model whose exact
 // term never is, is a failure: shown in the result and counted as a bench mismatch.
 // Semantics: docs/lighting/semantics.md; accuracy: docs/lighting/accuracy.md.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -76,22 +77,28 @@ std::optional<Vec3<Rational>> sphere_normal(const SweepGrid& g, int i, int j) {
   return sweep_vector(g, {x, y, std::sqrt(zz)});
 }
 
+// A direction in double, scaled by its largest component first (exactly), so that a denormal or a
+// huge input vector still has a unit direction.
+Vec3<double> direction_of(const Vec3<Rational>& v) {
+  const Rational m = std::max({abs(v.x), abs(v.y), abs(v.z)});
+  return lighting::unit(Vec3<double>{Rational(v.x / m).get_d(), Rational(v.y / m).get_d(), Rational(v.z / m).get_d()});
+}
+
 // The lobe view's plane of incidence, in double: the unit normal u, and the unit tangent t in the
 // plane of n and l pointing away from the light (towards the mirror direction). A light along the
 // normal leaves the plane free: then the eye's side, else any tangent.
 struct IncidencePlane {
   Vec3<double> u, t;
   static IncidencePlane of(const ModelInput& in) {
-    auto d3 = [](const Vec3<Rational>& v) { return lighting::unit(Vec3<double>{v.x.get_d(), v.y.get_d(), v.z.get_d()}); };
-    const Vec3<double> u = d3(in.n);
+    const Vec3<double> u = direction_of(in.n);
     auto tangent = [&](const Vec3<double>& v, double sign) -> std::optional<Vec3<double>> {
       const Vec3<double> w = v - dot(v, u) * u;
       if (!(dot(w, w) > 1e-20)) return std::nullopt;
       return lighting::unit(sign * w);
     };
-    const auto t = tangent(d3(in.l), -1);
+    const auto t = tangent(direction_of(in.l), -1);
     if (t) return {u, *t};
-    if (const auto te = tangent(d3(in.e), 1)) return {u, *te};
+    if (const auto te = tangent(direction_of(in.e), 1)) return {u, *te};
     return {u, *tangent(std::fabs(u.x) < 0.9 ? Vec3<double>{1, 0, 0} : Vec3<double>{0, 1, 0}, 1)};
   }
   // The direction at `deg` degrees from the normal, positive towards the mirror side.
@@ -99,9 +106,9 @@ struct IncidencePlane {
     const double a = deg * (3.141592653589793 / 180);
     return std::cos(a) * u + std::sin(a) * t;
   }
-  // A direction's angle in the plane, or NaN if it leaves the plane by more than 1e-9 of its length.
-  double angle(const Vec3<double>& v) const {
-    const Vec3<double> w = lighting::unit(v), b = cross(u, t);
+  // A unit direction's angle in the plane, or NaN if it leaves the plane by more than 1e-9.
+  double angle(const Vec3<double>& w) const {
+    const Vec3<double> b = cross(u, t);
     if (std::fabs(dot(w, b)) > 1e-9) return NAN;
     return std::atan2(dot(w, t), dot(w, u)) * (180 / 3.141592653589793);
   }
@@ -190,9 +197,8 @@ template <class A> struct ModelSpec {
     };
   }
   static std::optional<std::array<double, 2>> lobe_angles(const Input& in) {
-    auto d3 = [](const Vec3<Rational>& v) { return Vec3<double>{v.x.get_d(), v.y.get_d(), v.z.get_d()}; };
     const IncidencePlane plane = IncidencePlane::of(in);
-    return std::array{plane.angle(d3(in.l)), plane.angle(d3(in.e))};
+    return std::array{plane.angle(direction_of(in.l)), plane.angle(direction_of(in.e))};
   }
   static Json lobe_input(Json j, const Input& in, const SweepGrid& g, int i) {
     const Vec3<Rational> e = sweep_vector(g, IncidencePlane::of(in).at(g.x(i)));

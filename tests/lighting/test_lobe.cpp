@@ -79,6 +79,12 @@ TEST_CASE("lobe: the reference lobes of Phong and Blinn-Phong peak at the mirror
   std::vector<float> flat;
   find_algorithm("lambert").lobe.run(base, Numeric::reference, g, flat);
   for (std::size_t i = 1; i + 1 < flat.size(); ++i) CHECK(flat[i] == Approx(std::sqrt(0.5)).epsilon(1e-7));
+  // A denormal normal and a huge light give the same plane, and the same flat lobe.
+  const Json scaled = parse_json_text(R"({"n":[0,0,1e-310],"l":[1e14,0,1e14],"e":[0,0,1]})", "t");
+  std::vector<float> flat2;
+  find_algorithm("lambert").lobe.run(scaled, Numeric::reference, g, flat2);
+  CHECK(flat2 == flat);
+  CHECK((*find_algorithm("lambert").lobe.angles(scaled))[0] == Approx(-45));
   // An eye off the plane has no angle.
   Json off = base;
   off["e"] = {0, 1, 1};
