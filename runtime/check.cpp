@@ -20,6 +20,8 @@ struct Tolerance {
 // Nesting depth of a JSON value, without recursion: readers and printers below recurse at most
 // this deep, so a trace nested 10^5 levels is refused before anything recurses into it.
 constexpr std::size_t kMaxNesting = 64;
+// A trace line is JSON text, read only up to the JSON readers' bound.
+constexpr std::size_t kMaxTraceLine = kMaxJsonBytes;
 std::size_t nesting(const Json& root) {
   std::vector<std::pair<const Json*, std::size_t>> todo{{&root, 1}};
   std::size_t deepest = 0;
@@ -230,7 +232,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
   std::size_t lineno = 0;
   // The next non-blank line's text (in `line`), or false at the end.
   auto next_text = [&]() -> bool {
-    while (std::getline(in, line)) {
+    while (read_line(in, line, kMaxTraceLine, "line " + std::to_string(lineno + 1))) {
       ++lineno;
       if (line.find_first_not_of(" \t\r") != std::string::npos) return true;
     }

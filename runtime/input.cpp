@@ -73,6 +73,22 @@ Json parse_json_text(std::string_view text, std::string_view what) {
   }
 }
 
+bool read_line(std::istream& in, std::string& line, std::size_t max, const std::string& what) {
+  line.clear();
+  char buf[1 << 16];
+  bool any = false;
+  for (;;) {
+    in.getline(buf, sizeof buf);
+    const std::streamsize n = in.gcount();  // counts the '\n' when it was read (not stored)
+    const bool at_end = in.eof(), full = !at_end && in.fail();  // full: the line goes on
+    line.append(buf, static_cast<std::size_t>(full || at_end ? n : n - 1));
+    any = any || n > 0;
+    if (line.size() > max) throw InputError(what + ": a line of more than " + std::to_string(max) + " bytes");
+    if (!full) return any;
+    in.clear();
+  }
+}
+
 std::ifstream open_input_file(const std::string& path, std::string_view what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(std::string(what) + " '" + path + "' is a directory");

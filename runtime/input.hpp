@@ -33,6 +33,9 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 Json parse_json_text(std::string_view text, std::string_view what);
 // An --input argument: JSON text (starting with '{' or '[') or the name of a file holding it.
 Json read_input_arg(const std::string& arg);
+// std::getline with a bound: reads the next line (without its '\n') into `line`, false at the end.
+// A line of more than `max` bytes throws InputError naming `what`, before more of it is read.
+bool read_line(std::istream& in, std::string& line, std::size_t max, const std::string& what);
 // Opens a file to read, or throws InputError naming `what`: missing, unreadable, a directory.
 std::ifstream open_input_file(const std::string& path, std::string_view what);
 // A message as one line for a terminal: control characters escaped (\n, \t, \xNN), cut to about

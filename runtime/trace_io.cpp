@@ -216,7 +216,7 @@ void write_trace(const Algorithm& alg, Numeric n, const Json& input, std::ostrea
 std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::ostream& out, const Budget& budget) {
   std::vector<Json> inputs;
   std::string line;
-  for (std::size_t k = 1; std::getline(in, line); ++k) {
+  for (std::size_t k = 1; read_line(in, line, kMaxJsonBytes, "line " + std::to_string(k)); ++k) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     try {
       Json j = parse_json_text(line, "input");

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <csignal>
 #include <fstream>
+#include <sstream>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
@@ -161,4 +162,21 @@ TEST_CASE("reliability: the work budget refuses what it estimates too large, and
             "the output passes the budget of 1000 bytes (--max-output raises it)") != std::string::npos);
   CHECK(entries(dir) == 1);  // in.jsonl only: no output, no temporary
   CHECK(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0,0],\"p1\":[30,20]}' --out " + sh_quote(out.string())).status == 0);
+}
+
+TEST_CASE("reliability: lines are read with a bound, as getline reads them below it", "[reliability]") {
+  const std::string text = "a\n\n" + std::string(200000, 'b') + "\nlast";
+  std::istringstream in(text);
+  std::string line;
+  std::vector<std::string> got;
+  while (sw::read_line(in, line, 300000, "t")) got.push_back(line);
+  REQUIRE(got.size() == 4);
+  CHECK(got[0] == "a");
+  CHECK(got[1].empty());
+  CHECK(got[2] == std::string(200000, 'b'));
+  CHECK(got[3] == "last");
+  std::istringstream in2(text);
+  CHECK(sw::read_line(in2, line, 100, "t"));
+  CHECK(sw::read_line(in2, line, 100, "t"));
+  CHECK_THROWS_WITH(sw::read_line(in2, line, 100000, "trace line 3"), "trace line 3: a line of more than 100000 bytes");
 }
