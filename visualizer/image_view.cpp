@@ -212,13 +212,7 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
   if (self) std::snprintf(lines[2], sizeof lines[2], "swept in %.1f ms", image_.mode_ms);
   else if (shaded) std::snprintf(lines[2], sizeof lines[2], "%zu brighter, %zu darker in %s; %.1f + %.1f ms", image_.false_hits, image_.missed, mode.c_str(), image_.mode_ms, image_.exact_ms);
   else std::snprintf(lines[2], sizeof lines[2], "%zu only %s hit, %zu only %s; %.1f + %.1f ms", image_.false_hits, mode.c_str(), image_.missed, ref.c_str(), image_.mode_ms, image_.exact_ms);
-  float text_w = 0, line_h = ImGui::GetTextLineHeight();
-  for (const auto& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l).x);
-  dl->AddRectFilled(ImVec2(origin_.x + 4, origin_.y + 4), ImVec2(origin_.x + text_w + 14, origin_.y + 3 * line_h + 12), IM_COL32(0, 0, 0, 190), 3);
-  for (int k = 0; k < 3; ++k) {
-    const ImU32 col = k ? theme::kLabel : image_.disagreements() || !error_.empty() ? IM_COL32(255, 130, 120, 255) : IM_COL32(130, 220, 150, 255);
-    dl->AddText(ImVec2(origin_.x + 9, origin_.y + 7 + k * line_h), col, lines[k]);
-  }
+  status_plate(dl, ImVec2(origin_.x + 4, origin_.y + 4), lines, image_.disagreements() || !error_.empty());
   const float ly = end.y - 24;
   dl->AddRectFilled(ImVec2(origin_.x, ly - 4), end, IM_COL32(16, 18, 24, 210));
   float lx = origin_.x + 8;

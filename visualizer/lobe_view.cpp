@@ -178,14 +178,8 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
                 beyond ? "; past the ring near grazing" : "");
   if (self) std::snprintf(lines[2], sizeof lines[2], "swept in %.1f ms%s", lobe_.mode_ms, eye_in_plane ? "" : "; the eye is off this plane");
   else std::snprintf(lines[2], sizeof lines[2], "swept in %.1f + %.1f ms%s", lobe_.mode_ms, lobe_.exact_ms, eye_in_plane ? "" : "; the eye is off this plane");
-  float text_w = 0;
-  for (const auto& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l).x);
   const float y0 = origin.y + (*in.label ? label_h + 8 : 4);  // under the corner label, side by side
-  dl->AddRectFilled(ImVec2(origin.x + 4, y0), ImVec2(origin.x + text_w + 14, y0 + 3 * label_h + 8), IM_COL32(0, 0, 0, 190), 3);
-  for (int k = 0; k < 3; ++k) {
-    const ImU32 col = k ? theme::kLabel : lobe_.disagreements() || !error_.empty() ? IM_COL32(255, 130, 120, 255) : IM_COL32(130, 220, 150, 255);
-    dl->AddText(ImVec2(origin.x + 9, y0 + 3 + float(k) * label_h), col, lines[k]);
-  }
+  status_plate(dl, ImVec2(origin.x + 4, y0), lines, lobe_.disagreements() || !error_.empty());
   float lx = origin.x + 8;
   const float ly = end.y - label_h - 4;
   auto key = [&](ImU32 col, const std::string& text) {

@@ -1,5 +1,6 @@
 // Colours, fonts and style shared by the panels and both hosts. Constants only: no mutable state.
 #pragma once
+#include <algorithm>
 #include <imgui.h>
 
 namespace sw::vis::theme {
@@ -36,6 +37,18 @@ struct Fonts {
 // `scale` multiplies font sizes and spacing (1 at 1280x800).
 Fonts setup_style(float scale = 1.f);
 
+// A sweep view's status plate at `at`: three lines on a dark plate, the first red when `bad` (the
+// mode disagrees, or the sweep failed) and green otherwise, the others grey.
+inline void status_plate(ImDrawList* dl, ImVec2 at, const char (&lines)[3][200], bool bad) {
+  const float line_h = ImGui::GetTextLineHeight();
+  float text_w = 0;
+  for (const auto& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l).x);
+  dl->AddRectFilled(at, ImVec2(at.x + text_w + 10, at.y + 3 * line_h + 8), IM_COL32(0, 0, 0, 190), 3);
+  for (int k = 0; k < 3; ++k) {
+    const ImU32 col = k ? theme::kLabel : bad ? IM_COL32(255, 130, 120, 255) : IM_COL32(130, 220, 150, 255);
+    dl->AddText(ImVec2(at.x + 5, at.y + 3 + float(k) * line_h), col, lines[k]);
+  }
+}
 }  // namespace sw::vis::theme
 
 namespace sw::vis {
@@ -53,5 +66,17 @@ inline void corner_label(ImDrawList* dl, ImVec2 origin, ImVec2 size, const char*
   const ImVec2 p(origin.x + size.x - ts.x - 10, origin.y + 6);
   dl->AddRectFilled(ImVec2(p.x - 4, p.y - 2), ImVec2(p.x + ts.x + 4, p.y + ts.y + 2), IM_COL32(0, 0, 0, 170), 3);
   dl->AddText(p, IM_COL32(255, 255, 255, 255), label);
+}
+// A sweep view's status plate at `at`: three lines on a dark plate, the first red when `bad` (the
+// mode disagrees, or the sweep failed) and green otherwise, the others grey.
+inline void status_plate(ImDrawList* dl, ImVec2 at, const char (&lines)[3][200], bool bad) {
+  const float line_h = ImGui::GetTextLineHeight();
+  float text_w = 0;
+  for (const auto& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l).x);
+  dl->AddRectFilled(at, ImVec2(at.x + text_w + 10, at.y + 3 * line_h + 8), IM_COL32(0, 0, 0, 190), 3);
+  for (int k = 0; k < 3; ++k) {
+    const ImU32 col = k ? theme::kLabel : bad ? IM_COL32(255, 130, 120, 255) : IM_COL32(130, 220, 150, 255);
+    dl->AddText(ImVec2(at.x + 5, at.y + 3 + float(k) * line_h), col, lines[k]);
+  }
 }
 }  // namespace sw::vis

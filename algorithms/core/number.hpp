@@ -119,11 +119,9 @@ template <class T> std::string json_value(const T& x) {
   if constexpr (std::is_same_v<T, Rational>) {
     return '"' + num::to_text(x) + '"';
   } else {
-    std::string t = num::to_text(x);
-    if (t.find("nan") != std::string::npos) return "\"NaN\"";
-    if (t == "inf") return "\"Infinity\"";
-    if (t == "-inf") return "\"-Infinity\"";
-    return t;
+    const double d = num::to_double(x);  // a test on the value, not a search of every number's text
+    if (!std::isfinite(d)) return std::isnan(d) ? "\"NaN\"" : d > 0 ? "\"Infinity\"" : "\"-Infinity\"";
+    return num::to_text(x);
   }
 }
 
