@@ -62,9 +62,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   auto* list = app.add_subcommand("list", "One line per algorithm: its id and what it does");
-  bool list_markdown = false;
+  bool list_markdown = false, list_json = false;
   std::string list_listing;
   list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
+  list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input");
   list->add_option("--listing", list_listing, "Print one algorithm's listing: line id, name and text");
 
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "Replay a trace against the exact oracle; exit 0 agree, 1 diverge, 2 malformed");
   check->add_option("trace", trace_path, "Trace file (JSONL), or - for standard input")->required();
   check->add_flag("--decisions-only", decisions_only, "Compare lines, kinds, integers and pixels, not rounded numbers");
+  check->add_option("--max-steps", budget.max_steps, "Refuse traces whose replay implies more steps (default 4000000)");
 
   auto* bench = app.add_subcommand("bench", "Accuracy against time in every numeric mode, on seeded sets");
   bench->add_option("algorithm", alg_id, "Algorithm id")->required();
@@ -128,6 +130,10 @@ int main(int argc, char** argv) {
         std::cout << catalog_markdown();
         return 0;
       }
+      if (list_json) {
+        std::cout << catalog_jsonl();
+        return 0;
+      }
       if (!list_listing.empty()) {
         const Algorithm& alg = find_algorithm(list_listing);
         std::printf("%s\n", std::string(alg.listing.title).c_str());
@@ -158,10 +164,10 @@ int main(int argc, char** argv) {
     if (*check) {
       CheckReport rep;
       if (trace_path == "-") {
-        rep = check_trace(std::cin, decisions_only);
+        rep = check_trace(std::cin, decisions_only, budget);
       } else {
         std::ifstream in = open_input_file(trace_path, "trace file");
-        rep = check_trace(in, decisions_only);
+        rep = check_trace(in, decisions_only, budget);
       }
       (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << one_line(rep.message, 2000) << '\n';
       return rep.status;

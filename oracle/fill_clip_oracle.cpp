@@ -108,9 +108,12 @@ std::vector<BoundaryPiece> boundary_chain(const Polygon2& polygon) {
     e[std::max(ta, tb)] -= w;
   }
   std::vector<BoundaryPiece> out;
-  for (const auto& [line, e] : events) {
-    const auto& [vertical, m, c] = line;
-    auto at = [&](const Rational& t) { return vertical ? Vec2<Rational>{m, t} : Vec2<Rational>{t, Rational(m * t + c)}; };
+  for (const auto& entry : events) {
+    const auto& e = entry.second;
+    auto at = [&line = entry.first](const Rational& t) {
+      const auto& [vertical, m, c] = line;
+      return vertical ? Vec2<Rational>{m, t} : Vec2<Rational>{t, Rational(m * t + c)};
+    };
     std::int64_t running = 0;
     const Rational* from = nullptr;
     for (const auto& [t, delta] : e) {

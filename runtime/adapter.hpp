@@ -21,6 +21,7 @@
 //             static double error(const Output& got, const Output& exact), reported as max;
 //             static std::size_t estimate_steps(const Input&): an upper estimate the recorder
 //             reserves (reserved memory costs nothing until touched; regrowth copies it all);
+//             static std::size_t step_cost(Numeric): budget units a step costs in that mode;
 //             static Json canonical(Json result): the result in the form the oracle states it
 //             (e.g. a set sorted), for comparing with the oracle;
 //             static bool bench_runs(set name, Numeric): false skips a set in that mode;
@@ -286,6 +287,7 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
   };
   a.validate = [](const Json& j, Numeric n) { (void)Spec::parse(j, n); };
   if constexpr (names_hook<Spec>(Hook::estimate_steps)) a.estimate_steps = [](const Json& j, Numeric n) { return std::size_t(Spec::estimate_steps(Spec::parse(j, n))); };
+  if constexpr (names_hook<Spec>(Hook::step_cost)) a.step_cost = [](Numeric n) { return std::size_t(Spec::step_cost(n)); };
   a.run = [=](const Json& j, Numeric n) {
     bool fb;
     auto out = compute_mode<Spec>(Spec::parse(j, n), n, [](auto, auto&& compute) {
@@ -308,6 +310,17 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
     rec.result = result(out, n, fb);
     return rec;
   };
+  // The result object, streamed from the output where the Spec writes its members itself.
+  auto write_result = [=](const auto& out, Numeric n, bool fb, std::ostream& os) {
+    if constexpr (names_hook<Spec>(Hook::write_members)) {
+      os << '{';
+      Spec::write_members(out, os);
+      if (n == Numeric::filtered) os << ",\"fallback\":" << (fb ? "true" : "false");
+      os << '}';
+    } else {
+      os << result(out, n, fb).dump();
+    }
+  };
   a.stream = [=](const Json& j, Numeric n, std::ostream& os) {
     bool fb;
     auto out = compute_mode<Spec>(Spec::parse(j, n), n, [&](auto t, auto&& compute) {
@@ -316,14 +329,18 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
       probe.finish();
       return o;
     }, &fb);
-    if constexpr (names_hook<Spec>(Hook::write_members)) {
-      os << "{\"result\":{";
-      Spec::write_members(out, os);
-      if (n == Numeric::filtered) os << ",\"fallback\":" << (fb ? "true" : "false");
-      os << "}}\n";
-    } else {
-      os << Json{{"result", result(out, n, fb)}}.dump() << '\n';
-    }
+    os << "{\"result\":";
+    write_result(out, n, fb, os);
+    os << "}\n";
+  };
+  a.run_to = [=](const Json& j, Numeric n, std::ostream& os) {
+    bool fb;
+    auto out = compute_mode<Spec>(Spec::parse(j, n), n, [](auto, auto&& compute) {
+      NoProbe none;
+      return compute(none);
+    }, &fb);
+    write_result(out, n, fb, os);
+    os << '\n';
   };
   a.oracle = [](const Json& j) {
     Json r = Spec::to_json(Spec::oracle(Spec::parse(j, Numeric::exact)));

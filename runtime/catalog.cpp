@@ -49,4 +49,15 @@ std::string catalog_markdown() {
   return out;
 }
 
+std::string catalog_jsonl() {
+  std::string out;
+  for (const Algorithm& a : catalog()) {
+    Json modes = Json::array();
+    for (Numeric n : a.numerics) modes.push_back(std::string(numeric_name(n)));
+    const Json line{{"id", a.id}, {"family", a.family}, {"what", a.summary}, {"modes", modes}, {"example", Json::parse(a.example)}};
+    out += line.dump() + "\n";
+  }
+  return out;
+}
+
 }  // namespace sw

@@ -75,8 +75,13 @@ struct Algorithm {
   // number of steps (the result itself is held once, as the algorithm's output).
   std::function<void(const Json& input, Numeric, std::ostream& out)> stream;
   std::function<Json(const Json& input, Numeric)> run;  // untraced
+  // run's result as one line, written as it is made (no Json of a large result is built).
+  std::function<void(const Json& input, Numeric, std::ostream& out)> run_to;
   // An upper estimate of the steps a run takes (empty if the Spec gives none); the work budget.
   std::function<std::size_t(const Json& input, Numeric)> estimate_steps;
+  // What one of those steps costs against the budget in a mode, where a mode's step is much dearer
+  // than a line step (measured, docs/cli.md); empty: 1.
+  std::function<std::size_t(Numeric)> step_cost;
   // The independent exact oracle's result for this input (brute force, oracle/).
   std::function<Json(const Json& input)> oracle;
   // A result in the form the oracle states it (sorted, for results the oracle gives as a set).
@@ -95,6 +100,8 @@ const Algorithm& find_algorithm(std::string_view id);
 Numeric parse_numeric_for(const Algorithm& alg, std::string_view name);
 
 // The README's algorithm table: one row per algorithm, grouped by family, with its modes.
+// One JSON object per algorithm: id, family, what, modes and its example input (`list --json`).
+std::string catalog_jsonl();
 std::string catalog_markdown();
 
 // Families register themselves here (catalog.cpp calls each once, in this order).

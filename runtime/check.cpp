@@ -226,7 +226,7 @@ void require_step_shape(const Json& j, std::size_t lineno) {
 
 }  // namespace
 
-CheckReport check_trace(std::istream& in, bool decisions_only) {
+CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& budget) {
   CheckReport rep;
   std::string line;
   std::size_t lineno = 0;
@@ -266,6 +266,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only) {
     const Numeric replay_mode = mode == Numeric::integer ? Numeric::integer : alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
     if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
     alg.validate(input, replay_mode);
+    check_budget(alg, input, replay_mode, budget);
     const Tolerance tol{mode_tolerance(mode), !decisions_only};
     const bool rounded = tol.rel > 0 && mode != Numeric::reference;
     auto diverged = [&](const std::string& where, const std::string& what) {

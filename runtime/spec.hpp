@@ -19,6 +19,7 @@ enum class Hook : std::uint8_t {
   filters,         // using Filters = std::tuple<stages...>
   handles,         // static std::vector<Handle> handles()
   estimate_steps,  // static std::size_t estimate_steps(const Input&)
+  step_cost,       // static std::size_t step_cost(Numeric): work-budget units one step costs in that mode
   write_members,   // static void write_members(const Output&, std::ostream&)
   canonical,       // static Json canonical(const Json& result)
   error,           // static double error(const Output& got, const Output& exact)
@@ -35,7 +36,7 @@ enum class Hook : std::uint8_t {
   params,          // static std::vector<Param> params()
   compare_group,   // static constexpr std::string_view compare_group
 };
-inline constexpr std::size_t kHookCount = 17;
+inline constexpr std::size_t kHookCount = 18;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -51,6 +52,7 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::filters: return requires { typename S::Filters; };
     case Hook::handles: return requires { { S::handles() } -> std::same_as<std::vector<Handle>>; };
     case Hook::estimate_steps: return requires(const In& in) { { S::estimate_steps(in) } -> std::convertible_to<std::size_t>; };
+    case Hook::step_cost: return requires(Numeric n) { { S::step_cost(n) } -> std::convertible_to<std::size_t>; };
     case Hook::write_members: return requires(const Out& o, std::ostream& os) { S::write_members(o, os); };
     case Hook::canonical: return requires(const Json& r) { { S::canonical(r) } -> std::convertible_to<Json>; };
     case Hook::error: return requires(const Out& o) { { S::error(o, o) } -> std::convertible_to<double>; };

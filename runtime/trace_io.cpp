@@ -1,7 +1,9 @@
 // Trace files (docs/trace-format.md): the schema and header, writing traces atomically, batches.
 #include "trace_io.hpp"
 #include <unistd.h>
+#include <algorithm>
 #include <csignal>
+#include <cstdint>
 #include <cstring>
 #include <random>
 
@@ -98,12 +100,37 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+namespace {
+// The longest string in an input: exact numbers are strings ("p/q", decimals), at most 4096
+// characters each (input.cpp). Depth is bounded by the JSON readers (kMaxJsonDepth).
+std::size_t longest_string(const Json& j) {
+  if (j.is_string()) return j.get_ref<const std::string&>().size();
+  std::size_t m = 0;
+  if (j.is_structured())
+    for (const Json& v : j) m = std::max(m, longest_string(v));
+  return m;
+}
+}  // namespace
+
+std::uint64_t step_weight(const Json& input, Numeric n) {
+  if (n != Numeric::exact && n != Numeric::filtered) return 1;  // rounded modes convert the input once
+  return 1 + longest_string(input) / kDigitsPerWeight;
+}
+
 void check_budget(const Algorithm& alg, const Json& input, Numeric n, const Budget& budget) {
-  if (!alg.estimate_steps) return;
-  const std::size_t steps = alg.estimate_steps(input, n);
-  if (steps > budget.max_steps)
-    throw InputError("this input implies up to " + std::to_string(steps) + " steps, more than the budget of " + std::to_string(budget.max_steps) +
-                     " (--max-steps raises it)");
+  if (!alg.estimate_steps) return;  // constant step counts, or bounded when parsed (docs/cli.md)
+  const std::uint64_t steps = alg.estimate_steps(input, n), cost = alg.step_cost ? alg.step_cost(n) : 1, weight = step_weight(input, n);
+  auto times = [](std::uint64_t a, std::uint64_t b) -> std::uint64_t {  // saturating
+    return b != 0 && a > UINT64_MAX / b ? UINT64_MAX : a * b;
+  };
+  const std::uint64_t total = times(times(steps, cost), weight);
+  if (total > budget.max_steps) {
+    std::string why;
+    if (cost > 1) why += " x " + std::to_string(cost) + " for " + std::string(alg.id) + "'s steps in " + std::string(numeric_name(n));
+    if (weight > 1) why += " x " + std::to_string(weight) + " for exact numbers of " + std::to_string(longest_string(input)) + " characters";
+    throw InputError("this input implies up to " + std::to_string(steps) + " steps" + why + ", more than the budget of " +
+                     std::to_string(budget.max_steps) + " (--max-steps raises it)");
+  }
 }
 
 BudgetedStream::BudgetedStream(std::ostream& out, std::uint64_t max) : std::ostream(&buf_) {
@@ -227,7 +254,7 @@ std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::os
       throw InputError("line " + std::to_string(k) + ": " + e.what());
     }
   }
-  for (const Json& j : inputs) out << alg.run(j, n).dump() << '\n';
+  for (const Json& j : inputs) alg.run_to(j, n, out);
   return inputs.size();
 }
 

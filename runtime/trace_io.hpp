@@ -38,6 +38,11 @@ struct Budget {
   std::uint64_t max_steps = 4'000'000;
   std::uint64_t max_output = std::uint64_t{1} << 30;
 };
+// In exact and filtered modes a step costs more the longer the input's exact numbers: a step counts
+// 1 + (longest string) / kDigitsPerWeight against max_steps (measured on dda-grid-walk: 1.3 us a
+// step at 1 character, 5.5 us at 2000, 12 us at 4000; docs/cli.md).
+inline constexpr std::size_t kDigitsPerWeight = 400;
+std::uint64_t step_weight(const Json& input, Numeric n);
 // Throws InputError naming the estimate, the budget and the flag that raises it.
 void check_budget(const Algorithm& alg, const Json& input, Numeric n, const Budget& budget);
 
@@ -85,6 +90,7 @@ struct CheckReport {
   std::string message;
   std::size_t steps = 0;
 };
-CheckReport check_trace(std::istream& trace, bool decisions_only);
+// The replay's work is held to `budget` (its max_steps) before it starts.
+CheckReport check_trace(std::istream& trace, bool decisions_only, const Budget& budget = {});
 
 }  // namespace sw

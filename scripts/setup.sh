@@ -11,7 +11,7 @@ PACKAGES=(
   catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
   libimgui-dev libstb-dev libglfw3-dev libgl-dev libosmesa6-dev libgif-dev
   xvfb xauth libembree-dev fonts-dejavu-core libtinyobjloader-dev libnanoflann-dev
-  libcgal-demo
+  libcgal-demo clang libclang-rt-14-dev llvm-14
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

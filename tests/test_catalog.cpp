@@ -54,7 +54,8 @@ const std::map<std::pair<std::string_view, std::string_view>, std::string_view> 
 
 }  // namespace
 
-TEST_CASE("catalog: every listing line is reached by a step of the examples and the corpus", "[catalog]") {
+// Also: the work budget's estimate (docs/cli.md) is an upper bound on the steps of these runs.
+TEST_CASE("catalog: every listing line is reached by a step of the examples and the corpus, within the step estimate", "[catalog][budget]") {
   for (const Algorithm& alg : catalog()) {
     INFO(alg.id);
     const Numeric n = alg.supports(Numeric::exact) ? Numeric::exact : Numeric::f64;
@@ -70,10 +71,21 @@ TEST_CASE("catalog: every listing line is reached by a step of the examples and 
       }
       const Recorded rec = alg.record(in, n);
       ++ran;
+      if (alg.estimate_steps) CHECK(rec.trace->size() <= alg.estimate_steps(in, n));
       for (std::size_t s = 0; s < rec.trace->size(); ++s)
         if (rec.trace->at(s).scope == 0) reached.insert(rec.trace->at(s).line);  // nested steps are the callee's lines
     }
     CHECK(ran > 0);
+    if (alg.estimate_steps)
+      for (Numeric m : alg.numerics) {  // rounded modes may take other paths
+        const Json example = Json::parse(alg.example);
+        try {
+          alg.validate(example, m);
+        } catch (const InputError&) {
+          continue;  // an example the int mode does not take (fractions)
+        }
+        CHECK(alg.record(example, m).trace->size() <= alg.estimate_steps(example, m));
+      }
     for (std::uint32_t id = 1; id <= alg.listing.lines.size(); ++id) {
       const std::string_view name = alg.listing.lines[id - 1].name;
       INFO("line " << id << " (" << name << ")");

@@ -5,11 +5,13 @@
 #include <catch2/catch.hpp>
 #include <csignal>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include "catalog.hpp"
 #include "cli_harness.hpp"
 #include "input.hpp"
 
@@ -162,6 +164,67 @@ TEST_CASE("reliability: the work budget refuses what it estimates too large, and
             "the output passes the budget of 1000 bytes (--max-output raises it)") != std::string::npos);
   CHECK(entries(dir) == 1);  // in.jsonl only: no output, no temporary
   CHECK(run_stepwise("trace dda-grid-walk --input '{\"p0\":[0,0],\"p1\":[30,20]}' --out " + sh_quote(out.string())).status == 0);
+}
+
+TEST_CASE("reliability: long exact numbers weigh every step, in run, trace and check", "[cli][reliability][budget]") {
+  const auto dir = scratch("digits");
+  // Exact strings of up to 4008 characters over one 2001-digit denominator, p1 about 330000 cells away.
+  const std::string den = "1" + std::string(1999, '0') + "7";
+  auto coord = [&](const std::string& whole) { return "\"" + whole + std::string(2000, '0') + "/" + den + "\""; };
+  const std::string input = "{\"p0\":[" + coord("1") + "," + coord("2") + "],\"p1\":[" + coord("200000") + "," + coord("130000") + "]}";
+  std::ofstream(dir / "in.json") << input;
+  const std::string in = sh_quote((dir / "in.json").string());
+  const auto exact = run_stepwise("run dda-grid-walk --numeric exact --inputs " + in);
+  CHECK(exact.status == 2);
+  CHECK(lines_in(exact.err) == 1);
+  CHECK(exact.err.find("steps x 11 for exact numbers of 4008 characters, more than the budget of 4000000") != std::string::npos);
+  // Rounded modes convert the numbers once: the same input is within the budget.
+  CHECK(run_stepwise("run dda-grid-walk --numeric double --inputs " + in).status == 0);
+  // check replays in exact: a trace whose header holds the input is refused before the replay.
+  std::ofstream(dir / "t.jsonl") << "{\"format\":\"stepwise-trace\",\"version\":2,\"algorithm\":\"dda-grid-walk\",\"numeric\":\"double\",\"input\":" << input
+                                 << "}\n{\"result\":{}}\n";
+  const auto c = run_stepwise("check " + sh_quote((dir / "t.jsonl").string()));
+  CHECK(c.status == 2);
+  CHECK(c.err.find("more than the budget of 4000000") != std::string::npos);
+}
+
+TEST_CASE("reliability: a dear mode's steps count for more against the budget", "[cli][reliability][budget]") {
+  // gouraud-vs-phong's widest triangle: about 10^5 steps, each 256 units in reference (docs/cli.md).
+  sw::Json in = sw::parse_json_text(sw::find_algorithm("gouraud-vs-phong").example, "example");
+  in["vertices"][1]["xy"] = sw::Json::array({64, 1});
+  in["vertices"][2]["xy"] = sw::Json::array({5, 64});
+  const std::string arg = sh_quote(in.dump());
+  const auto ref = run_stepwise("trace gouraud-vs-phong --numeric reference --input " + arg + " --out /dev/null");
+  CHECK(ref.status == 2);
+  CHECK(lines_in(ref.err) == 1);
+  CHECK(ref.err.find("steps x 256 for gouraud-vs-phong's steps in reference, more than the budget of 4000000") != std::string::npos);
+  CHECK(run_stepwise("trace gouraud-vs-phong --numeric double --input " + arg + " --out /dev/null").status == 0);
+  CHECK(run_stepwise("trace gouraud-vs-phong --numeric reference --max-steps 40000000 --max-output 100 --input " + arg + " --out /dev/null")
+            .err.find("the output passes the budget of 100 bytes") != std::string::npos);
+}
+
+TEST_CASE("reliability: an algorithm without a step estimate runs a few steps, whatever its input", "[reliability][budget]") {
+  // The budget can only refuse what an algorithm estimates (docs/cli.md). Those without an estimate
+  // are the ones whose step count is constant (one ray, one reflection model) or bounded when parsed
+  // (bsp: 4096 segments and a fragment bound; shade: 8 lights): a new algorithm with a loop over
+  // its input must declare estimate_steps, and this list must not grow by accident.
+  const std::set<std::string> constant = {"ray-plane", "ray-sphere-geometric", "ray-sphere-quadratic", "ray-sphere-stable", "ray-box",
+                                          "ray-triangle-barycentric", "ray-triangle-mt", "ray-triangle-watertight", "camera-ray", "sphere-uv",
+                                          "lambert", "minnaert", "oren-nayar", "toon", "phong", "blinn-phong", "gaussian", "beckmann",
+                                          "cook-torrance"};
+  const std::set<std::string> parse_bounded = {"bsp-build", "bsp-painter", "shade"};
+  for (const sw::Algorithm& a : sw::catalog()) {
+    const std::string id(a.id);
+    INFO(id);
+    if (a.estimate_steps) {
+      CHECK(constant.count(id) + parse_bounded.count(id) == 0);
+      continue;
+    }
+    REQUIRE(constant.count(id) + parse_bounded.count(id) == 1);
+    if (!constant.count(id)) continue;
+    const sw::Json input = sw::parse_json_text(a.example, "example");
+    for (sw::Numeric n : a.numerics) CHECK(a.record(input, n).trace->size() <= 40);
+  }
 }
 
 TEST_CASE("reliability: lines are read with a bound, as getline reads them below it", "[reliability]") {

@@ -103,6 +103,9 @@ TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments 
     std::string lesson_text, args, message;
   };
   const std::string good_head = "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[5,2]}\n";
+  // Within the budget in double; in exact, its 4000-character numbers weigh each step 11 times.
+  const std::string den = "1" + std::string(1999, '0') + "7", big = std::string(2000, '0') + "/" + den;
+  const std::string long_head = "---\nalgorithm: dda-line\ninput: {\"p0\":[\"1" + big + "\",0],\"p1\":[\"900000" + big + "\",1]}\n";
   const std::vector<Case> cases = {
       {"no front matter", "# A lesson\nno dashes\n", "", "front-matter"},
       {"unclosed front matter", good_head, "", "no closing"},
@@ -112,6 +115,8 @@ TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments 
       {"bad heading", good_head + "---\n## on line 42\n", "", "not a listing line"},
       {"step past the end", good_head + "---\n", " --step 999", "past the last step"},
       {"gif range reversed", good_head + "---\n", " --from 5 --to 2", "is after --to"},
+      {"over the work budget", "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[4000000,1]}\n---\n", "", "more than the budget of 4000000"},
+      {"compared run over the budget", long_head + "---\n", " --numeric double --compare exact", "x 11 for exact numbers"},
   };
   for (const Case& c : cases) {
     INFO(c.name);

@@ -62,13 +62,13 @@ std::string App::load(const Algorithm& alg, const Json& input, Numeric numeric, 
   Json other_input;
   if (compare.other) compare.numeric = numeric;  // another algorithm runs in the left's number type
   try {
-    a = record_model(alg, input, numeric);
+    a = record_model(alg, input, numeric, budget_);
     if (compare.other) {
       const bool same = compare.other == compare_.other && other_input_.is_object();
       other_input = carried_input(input, same ? other_input_ : parse_json_text(compare.other->example, "example"));
-      b = record_model(*compare.other, other_input, numeric);
+      b = record_model(*compare.other, other_input, numeric, budget_);
     } else if (compare) {
-      b = record_model(alg, input, *compare.numeric);
+      b = record_model(alg, input, *compare.numeric, budget_);
     }
   } catch (const std::exception& e) {  // InputError, or anything the run threw: show it, never crash
     return std::string(a && compare.other ? compare.other->id : alg.id) + ": " + e.what();

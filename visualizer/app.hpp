@@ -30,6 +30,8 @@ class App {
   const std::string& error() const { return error_; }
   void show_error(std::string message) { error_ = std::move(message); }
   bool loaded() const { return a_ != nullptr; }
+  // The work budget every run it records is held to (its max_steps; docs/cli.md).
+  void set_budget(const Budget& budget) { budget_ = budget; }
 
   // Builds one frame of UI over the whole display (ImGui::GetIO().DisplaySize).
   void frame(float dt);
@@ -90,6 +92,7 @@ class App {
   Json input_;
   Numeric numeric_ = Numeric::exact;
   Comparison compare_;
+  Budget budget_;
   Json other_input_;  // the other algorithm's input, when compare_.other
   std::optional<std::pair<std::string, float>> slider_drag_;  // a slider held in the image view: its id, value
   std::shared_ptr<const TraceModel> a_, b_;

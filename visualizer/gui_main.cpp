@@ -29,6 +29,7 @@ struct Options {
   std::string lesson, algorithm, input, numeric, compare, screenshot, size = "1280x800";
   std::optional<std::size_t> step;
   int frames = 0, bench_scrub = 0;
+  Budget budget;
 };
 
 // Opens what the options ask for; failures show in the app (and are returned for the exit code).
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
   cli.add_option("--numeric", o.numeric, "Number type");
   cli.add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
   cli.add_option("--step", o.step, "Start at this step");
+  cli.add_option("--max-steps", o.budget.max_steps, "Refuse inputs that imply more steps (default 4000000)");
   cli.add_option("--size", o.size, "Window size WxH");
   cli.add_option("--frames", o.frames, "Render this many frames, then exit")->check(CLI::Range(1, 100000));
   cli.add_option("--screenshot", o.screenshot, "With --frames: write the last frame to this PNG");
@@ -115,6 +117,7 @@ int main(int argc, char** argv) {
   {
     GlTextureHost textures;
     App app(textures, fonts);
+    app.set_budget(o.budget);
     const bool loaded = open(app, o);
     if (!loaded) std::cerr << "stepwise-gui: could not load: " << app.error() << '\n', status = 2;
     std::mt19937_64 rng(7);

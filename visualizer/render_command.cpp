@@ -77,10 +77,9 @@ int run_render(const RenderOptions& o) {
 
   Budget budget;
   budget.max_steps = o.max_steps;
-  alg->validate(input, numeric);
-  check_budget(*alg, input, numeric, budget);
   HeadlessHost host(w, h);
   App& app = host.app();
+  app.set_budget(budget);
   const bool ok = lesson ? app.open_lesson(o.lesson) : app.open_algorithm(*alg, input, numeric, compare);
   if (!ok) throw InputError(app.error());
   if (lesson && (!o.numeric.empty() || !o.compare.empty()) && !app.open_algorithm(*alg, input, numeric, compare)) throw InputError(app.error());

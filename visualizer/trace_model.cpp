@@ -192,8 +192,9 @@ std::optional<std::size_t> TraceModel::find_kind(std::size_t from, StepKind kind
   return std::nullopt;
 }
 
-std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric) {
+std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric, const Budget& budget) {
   alg.validate(input, numeric);
+  check_budget(alg, input, numeric, budget);
   Recorded rec = alg.record(input, numeric);
   if (!rec.trace || rec.trace->size() == 0) throw InputError(std::string(alg.id) + ": the run recorded no steps");
   return std::make_shared<const TraceModel>(alg, input, numeric, std::move(rec));

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 #include "catalog.hpp"
+#include "trace_io.hpp"
 
 namespace sw::vis {
 
@@ -106,6 +107,6 @@ class TraceModel {
 };
 
 // Records alg on input in numeric mode; throws InputError naming the problem.
-std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric);
+std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric, const Budget& budget = {});
 
 }  // namespace sw::vis

@@ -96,7 +96,9 @@ void interp_triangle(std::array<Vary<Num>, 3> v, std::size_t n, FillResult<Num>&
   auto record_edge = [&](auto line, const char* name, const Vary<Num>& q, const Vary<Num>& dq, const Vary<Num>& p0, const Vary<Num>& p1) {
     if constexpr (Probe::on) probe.step(line, StepKind::init).vec("q", q.p).list("q_h", q.attrs()).vec("dq", dq.p).list("dq_h", dq.attrs()).segment(p0.p, p1.p).label(name).point(q.p).label("q");
   };
-  auto [qc, dqc] = start(b, t);
+  auto long_edge = start(b, t);
+  auto& qc = long_edge.first;  // references, not a structured binding: the lambdas below capture them
+  const auto& dqc = long_edge.second;
   record_edge(L::long_edge, "c", qc, dqc, b, t);
   auto span = [&](Vary<Num> l, Vary<Num> r) {
     if (r.p.x < l.p.x) std::swap(l, r);

@@ -87,7 +87,9 @@ void raster_clip(Triangle<Num> v, const Screen& sc, FillResult<Num>& out, Probe&
           .segment(p0.p, p1.p).label(name).keep().point(q.p).label("q");
   };
   std::int64_t j = first_on_screen(b.p.y, sc.j0, sc.j1);  // the row: the first on screen at or above b
-  auto [qc, dqc] = start(b, t, j);
+  auto long_edge = start(b, t, j);
+  auto& qc = long_edge.first;  // references, not a structured binding: the lambdas below capture them
+  const auto& dqc = long_edge.second;
   record_edge(L::long_edge, "c", j, qc, dqc, b, t);
 
   // One row's span between the edges' points l and r (either order): the samples i in [l_x, r_x)

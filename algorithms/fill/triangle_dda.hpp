@@ -84,7 +84,9 @@ void triangle_dda(Triangle<Num> v, FillResult<Num>& out, Probe& probe) {
     if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("pixels", 0);
     return;
   }
-  auto [qc, dqc] = start(b, t);
+  auto long_edge = start(b, t);
+  auto& qc = long_edge.first;  // references, not a structured binding: the lambdas below capture them
+  const auto& dqc = long_edge.second;
   record_edge(L::long_edge, "c", qc, dqc, b, t);
 
   // One row's span between the edges' points l and r (either order), sampled at the integers in [l_x, r_x).

@@ -45,7 +45,7 @@ inline constexpr const char* kEdgeNames[] = {"E0", "E1", "E2"};
 template <NumberType Num, StepProbe Probe = NoProbe>
 void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe) {
   using L = TriangleEdge;
-  auto& [a, b, c] = tri.v;
+  Vec2<Num> &a = tri.v[0], &b = tri.v[1], &c = tri.v[2];
   const Num area2 = Num((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
   if (area2 < Num(0)) std::swap(b, c);
   if constexpr (Probe::on) {

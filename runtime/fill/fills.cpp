@@ -210,10 +210,17 @@ struct ScanlinePolygonSpec {
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
+  // Two steps an edge, then per row of the box: add, drop, sort, advance and a span (two steps) per
+  // pair of the at most n active edges.
   static std::size_t estimate_steps(const Input& in) {
     std::size_t n = 0;
-    for (const auto& r : in.rings) n += r.size();
-    return 16 * n + 256;
+    Rational lo = in.rings[0][0].y, hi = lo;
+    for (const auto& r : in.rings) {
+      n += r.size();
+      for (const auto& v : r) lo = std::min(lo, v.y), hi = std::max(hi, v.y);
+    }
+    const auto rows = static_cast<std::size_t>(num::floor_int(Rational(hi - lo))) + 2;
+    return 2 * n + rows * (4 + 2 * n) + 8;
   }
   static Output oracle(const Input& in) {
     return {oracle::polygon_samples(in.rings, in.rule == fill::WindingRule::nonzero ? oracle::FillRule::nonzero : oracle::FillRule::even_odd), 0, {}, {}};

@@ -91,7 +91,7 @@ std::vector<BenchSet<InterpInput>> interp_bench_sets() {
 }
 
 template <bool Persp> struct InterpSpec {
-  static constexpr std::array hooks{Hook::error, Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::error, Hook::estimate_steps, Hook::step_cost};
   using Algo = std::conditional_t<Persp, fill::PerspectiveInterp, fill::AffineInterp>;
   using Input = InterpInput;
   using Output = InterpOutput;
@@ -113,6 +113,8 @@ template <bool Persp> struct InterpSpec {
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // The box's samples (a plot and a step each at most), two steps per row, the clipping.
   static std::size_t estimate_steps(const Input& in) { return static_cast<std::size_t>(2.5 * box_samples(projected_corners(in))) + 128; }
+  // Budget units a step costs (measured, docs/cli.md: the largest accepted input within 10 s).
+  static std::size_t step_cost(Numeric n) { return n == Numeric::filtered || n == Numeric::exact ? 2 : 1; }
   static Output oracle(const Input& in) {
     const oracle::InterpSamples s = Persp ? oracle::perspective_samples(in.v, in.attrs, fill::w_near<Rational>())
                                           : oracle::affine_samples(in.v, in.attrs, fill::w_near<Rational>());

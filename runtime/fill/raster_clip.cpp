@@ -85,7 +85,7 @@ std::vector<RasterClipInput> random_inputs(std::mt19937_64& rng, int count, long
 }
 
 struct RasterClipSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps, Hook::step_cost};
   using Algo = fill::RasterClip;
   using Input = RasterClipInput;
   using Output = ClipFillOutput;
@@ -124,6 +124,8 @@ struct RasterClipSpec {
     const auto& s = in.screen;
     return static_cast<std::size_t>(2 * (s.i1 - s.i0) * (s.j1 - s.j0) + 4 * (s.j1 - s.j0) + 64);
   }
+  // Budget units a step costs (measured, docs/cli.md: the largest accepted input within 10 s).
+  static std::size_t step_cost(Numeric n) { return n == Numeric::exact ? 3 : 1; }
   // The covered samples on the screen, by brute force over the screen's samples only, and at each
   // the plane through the vertices' attributes.
   static Output oracle(const Input& in) {

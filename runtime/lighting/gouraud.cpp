@@ -24,7 +24,7 @@ struct GouraudOutput {
 };
 
 struct GouraudSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::params};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::step_cost, Hook::params};
   static std::vector<Param> params() { return shade_params(); }
   using Algo = GouraudVsPhong;
   using Input = ShadedTriangle<Rational>;
@@ -87,7 +87,17 @@ struct GouraudSpec {
     NoProbe none;
     return compute<Rational>(prepare<Rational>(in), none);
   }
-  static std::size_t estimate_steps(const Input&) { return std::size_t(kMaxBox * kMaxBox) * 24; }
+  // Up to 24 steps a pixel of the triangle's box: the rasterizer's and the shading's for 8 lights.
+  static std::size_t estimate_steps(const Input& in) {
+    std::size_t pixels = 1;
+    for (int a = 0; a < 2; ++a) {
+      const Rational lo = std::min({in.xy[0][a], in.xy[1][a], in.xy[2][a]}), hi = std::max({in.xy[0][a], in.xy[1][a], in.xy[2][a]});
+      pixels *= static_cast<std::size_t>(num::floor_int(Rational(hi - lo))) + 2;
+    }
+    return 24 * pixels;
+  }
+  // Budget units a step costs (measured, docs/cli.md: the largest accepted input within 10 s).
+  static std::size_t step_cost(Numeric n) { return n == Numeric::reference ? 256 : 1; }
   static std::vector<Handle> handles() {
     return {{"/vertices/0/xy", Handle::Kind::point2, 1, "v0"}, {"/vertices/1/xy", Handle::Kind::point2, 1, "v1"}, {"/vertices/2/xy", Handle::Kind::point2, 1, "v2"}};
   }

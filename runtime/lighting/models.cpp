@@ -183,8 +183,9 @@ template <class A> struct ModelSpec {
       p = prepare<Num>(in);
     };
   }
+  // Json::array, not a bare {…}: clang 14 never frees the value a braced list replaces in a template.
   static Json sweep_input(Json j, const Input&, const SweepGrid& g, int i, int k) {
-    if (const auto n = sphere_normal(g, i, k)) j["n"] = {n->x.get_d(), n->y.get_d(), n->z.get_d()};
+    if (const auto n = sphere_normal(g, i, k)) j["n"] = Json::array({n->x.get_d(), n->y.get_d(), n->z.get_d()});
     return j;
   }
   // The lobe view: the eye swept over the plane of incidence, n and l as given.
@@ -202,7 +203,7 @@ template <class A> struct ModelSpec {
   }
   static Json lobe_input(Json j, const Input& in, const SweepGrid& g, int i) {
     const Vec3<Rational> e = sweep_vector(g, IncidencePlane::of(in).at(g.x(i)));
-    j["e"] = {e.x.get_d(), e.y.get_d(), e.z.get_d()};
+    j["e"] = Json::array({e.x.get_d(), e.y.get_d(), e.z.get_d()});
     return j;
   }
   static float sweep_value(const Output& o) { return o.outside ? NAN : static_cast<float>(o.value); }

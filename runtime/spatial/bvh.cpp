@@ -115,7 +115,7 @@ BvhInput parse_common(const Json& j, bool with_ray) {
 std::shared_ptr<const Mesh> shared(Mesh m) { return std::make_shared<const Mesh>(std::move(m)); }
 
 struct BvhBuildSpec {
-  static constexpr std::array hooks{Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::step_cost};
   using Algo = spatial::BvhBuild;
   using Input = BvhInput;
   using Output = spatial::TreeOutput;
@@ -139,6 +139,8 @@ struct BvhBuildSpec {
     return n;
   }
   static std::size_t estimate_steps(const Input& in) { return build_steps(in.mesh->size()); }
+  // Budget units a step costs (measured, docs/cli.md: the largest accepted input within 10 s).
+  static std::size_t step_cost(Numeric n) { return n == Numeric::filtered || n == Numeric::exact ? 4 : 1; }
   // The tree is defined by the algorithm: the oracle is its exact run. The independent checks are
   // the structural invariants (tests/spatial/test_bvh.cpp: boxes bound, every triangle in one leaf).
   static Output oracle(const Input& in) {
@@ -169,7 +171,7 @@ struct TraverseOutput {
 };
 
 struct BvhTraverseSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::canonical, Hook::error};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::step_cost, Hook::canonical, Hook::error};
   using Algo = spatial::BvhTraverse;
   using Input = BvhInput;
   using Output = TraverseOutput;
@@ -205,6 +207,8 @@ struct BvhTraverseSpec {
   static double error(const Output& got, const Output& exact) { return got.any ? 0.0 : spatial::hit_error(got.h, exact.h); }
   static std::size_t ops(const Output&) { return 1; }
   static std::size_t estimate_steps(const Input& in) { return traverse_steps(in.mesh->size()); }
+  // Budget units a step costs (measured, docs/cli.md: the largest accepted input within 10 s).
+  static std::size_t step_cost(Numeric n) { return n == Numeric::filtered || n == Numeric::exact ? 2 : 1; }
   // The brute-force closest hit over all triangles; any hit: whether it lies before t_max.
   static Output oracle(const Input& in) {
     Output o{spatial::closest_hit_oracle(*in.mesh, in.ray), in.any};

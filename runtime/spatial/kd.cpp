@@ -22,7 +22,7 @@ PointSet parse_point_set(const Json& arr, const std::string& what) {
 void check_trace_budget(std::size_t steps, std::size_t n, const std::string& what) {
   if (steps > kTraceBudget)
     throw InputError(what + ": " + std::to_string(n) + " primitives, too many to trace (an estimated " + std::to_string(steps) +
-                     " steps, beyond the budget of 2^21); run it untraced");
+                     " steps, beyond the bound of 2^26 for a trace); run it untraced");
 }
 
 }  // namespace kdspec

@@ -12,9 +12,10 @@ namespace sw::kdspec {
 
 using namespace spatial;
 
-// A traced run (record, stream) is refused when its estimated steps pass this budget; untraced
-// runs take everything up to the size bounds (kMaxTriangles, kMaxPoints).
-inline constexpr std::size_t kTraceBudget = std::size_t{1} << 21;
+// A traced run (record, stream) is refused when its estimated steps pass this bound, which only a
+// raised --max-steps reaches (the recorder's memory); untraced runs take everything up to the size
+// bounds (kMaxTriangles, kMaxPoints).
+inline constexpr std::size_t kTraceBudget = std::size_t{1} << 26;
 
 // Points of 2 or 3 coordinates (all of one length, the first one's).
 struct PointSet {

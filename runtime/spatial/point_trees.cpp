@@ -84,6 +84,18 @@ Params parse_params(const Json& j, int depth_bound, int default_depth) {
   return p;
 }
 
+// An upper bound on a cell tree build's steps: root and done; per split a split, a push and a visit
+// of each child; per item placed a step. A level places at most the references it holds (n points;
+// at most min(max_refs, 8^level n) triangle references), and a split places more than `capacity`.
+std::size_t cell_tree_steps(std::size_t n, bool triangles, const Params& p, std::size_t children) {
+  std::size_t placed = 0, refs = n;
+  for (int level = 0; level < p.max_depth; ++level) {
+    placed += refs;
+    if (triangles) refs = std::min(p.max_refs, refs * children);
+  }
+  return (2 + children) * (placed / (p.capacity + 1)) + placed + 16;
+}
+
 template <int D> std::vector<std::array<double, D>> random_points(std::mt19937_64& rng, std::size_t n, bool clustered) {
   std::uniform_real_distribution<double> u(-100, 100);
   std::normal_distribution<double> g(0, 3);
@@ -143,7 +155,7 @@ struct QuadtreeBuildSpec {
   static std::size_t ops(const Output& o) { return o.tree.nodes.size(); }
   static double error(const Output& got, const Output& exact) { return tree_error(got, exact); }
   // A visit per node and a place per point and level; a node per 4 placements at most, plus 4.
-  static std::size_t estimate_steps(const Input& in) { return 3 * in.points.size() * static_cast<std::size_t>(in.p.max_depth + 1) + 16; }
+  static std::size_t estimate_steps(const Input& in) { return cell_tree_steps(in.points.size(), false, in.p, 4); }
   // Each cell's points found by testing every point (oracle/spatial_point_trees_oracle.*).
   static Output oracle(const Input& in) {
     std::vector<std::vector<Rational>> pts;
@@ -216,10 +228,8 @@ struct OctreeBuildSpec {
   static Json to_json(const Output& o) { return output_json(o); }
   static std::size_t ops(const Output& o) { return o.tree.nodes.size(); }
   static double error(const Output& got, const Output& exact) { return tree_error(got, exact); }
-  // Points: a place per point and level. Triangles: a place per reference at most (the budget).
   static std::size_t estimate_steps(const Input& in) {
-    if (!in.points.empty()) return 3 * in.points.size() * static_cast<std::size_t>(in.p.max_depth + 1) + 16;
-    return std::min<std::size_t>(in.p.max_refs, 8 * in.mesh.size() * static_cast<std::size_t>(in.p.max_depth + 1)) * 2 + 16;
+    return in.points.empty() ? cell_tree_steps(in.mesh.size(), true, in.p, 8) : cell_tree_steps(in.points.size(), false, in.p, 8);
   }
   // Each cell's items found by testing every item: half-open for points, CGAL's closed
   // triangle-box overlap for triangles (independent of the listing's separating axis test).

@@ -123,7 +123,9 @@ TEST_CASE("raster-clip: exact and filtered equal the oracle on 10^4 random trian
   for (int n = 0; n < 10000; ++n) {
     const Kind kind = Kind(n % kinds);
     const long den = (n / kinds) % 3 == 0 ? 1 : (n / kinds) % 3 == 1 ? 4 : 256;
-    const auto [t, s] = random_case(rng, kind, den);
+    const auto c = random_case(rng, kind, den);
+    const Tri& t = c.first;  // variables, not bindings: the lambda below captures them (clang 14)
+    const fill::Screen& s = c.second;
     INFO("kind " << kind << " triangle " << t[0].x << "," << t[0].y << " " << t[1].x << "," << t[1].y << " " << t[2].x << "," << t[2].y
                  << " screen " << s.i0 << "," << s.j0 << " " << s.i1 << "," << s.j1);
     const auto want = want_of(t, s);

@@ -29,7 +29,9 @@ TEST_CASE("fill steps: every value a scanline-polygon step records matches its c
       for (int v = 0; v < 3 + k % 6; ++v) r.push_back({grid_coord(rng, -8, 8, k % 3 ? 2 : 1), grid_coord(rng, -8, 8, k % 3 ? 2 : 1)});
     cases.push_back({rings, k % 2 ? fill::WindingRule::nonzero : fill::WindingRule::even_odd});
   }
-  for (const auto& [rings, rule] : cases) {
+  for (const auto& c : cases) {
+    const auto& rings = c.first;  // variables, not bindings: lambdas below capture them (clang 14)
+    const auto rule = c.second;
     Recorder<Rational> t;
     std::vector<Pixel> out;
     fill::scanline_polygon<Rational>({rings, rule}, out, t);

@@ -217,7 +217,9 @@ Expected walk_expected(const Segment& s) {
   auto pick = [&](const Q& t) {
     e.step(L::pick, StepKind::decide).var("t", t).var("tMax_x", t_max(cell, 0)).var("tMax_y", t_max(cell, 1)).point(p(t));
   };
-  for (const auto& [t, axes] : events) {
+  for (const auto& event : events) {
+    const Q& t = event.first;  // a variable, not a binding: lambdas below capture it (clang 14)
+    const auto& axes = event.second;
     CHECK(t >= 0);
     CHECK(t < 1);
     for (int a = 0; a < 2; ++a) CHECK(axes[a] == (d[a] != 0 && is_half_integer(p(t)[a]) && !(t == 0 && d[a] > 0)));

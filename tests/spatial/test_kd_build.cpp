@@ -5,6 +5,7 @@
 // the O(N log N) work counted; bad inputs and the trace budget.
 #include <catch2/catch.hpp>
 #include "kd_support.hpp"
+#include "trace_io.hpp"
 
 using namespace sw;
 using namespace sw::testing::kd;
@@ -150,14 +151,17 @@ TEST_CASE("kd-build: the work is O(N log N): events swept and split per N log2 N
   CHECK(ratio[2] < 40);
 }
 
-TEST_CASE("kd-build: bad input is one line, and a trace beyond the budget is refused", "[spatial][spatial-kd]") {
+TEST_CASE("kd-build: bad input is one line, and an input beyond the work budget is refused", "[spatial][spatial-kd]") {
   const Algorithm& a = build_alg();
   check_refused(a, {R"({"points":[]})", R"({"points":[[1,2,3,4]]})", R"({"points":[[1,2],[1,2,3]]})", R"({"points":[[1,"nan"]]})",
                     R"({"points":[[1,"inf"]]})", R"({"points":[[1,2]],"k":1})", R"({"triangles":[[[0,0,0],[1,0,0]]]})",
                     R"({"points":[[1,2]],"triangles":[]})", R"({"points":[[1e300,2]]})", "[1,2]"});
   Json pts = Json::array();
   std::mt19937_64 rng(3);
-  for (int i = 0; i < 40000; ++i) pts.push_back({grid_coord(rng, 0, 1, 20), grid_coord(rng, 0, 1, 20)});
-  CHECK_THROWS_AS(a.record({{"points", pts}}, Numeric::f64), InputError);
-  CHECK(a.run({{"points", pts}}, Numeric::f64)["leaves"].get<int>() > 1000);  // untraced: fine
+  for (int i = 0; i < 50000; ++i) pts.push_back({grid_coord(rng, 0, 1, 20), grid_coord(rng, 0, 1, 20)});
+  const Json big{{"points", pts}};
+  // About 4.8 million estimated steps: over the default work budget (docs/cli.md), within a raised one.
+  CHECK_THROWS_WITH(check_budget(a, big, Numeric::f64, Budget{}), Catch::Contains("steps, more than the budget of 4000000 (--max-steps raises it)"));
+  CHECK_NOTHROW(check_budget(a, big, Numeric::f64, Budget{5'000'000}));
+  CHECK(a.run(big, Numeric::f64)["leaves"].get<int>() > 1000);
 }

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz harnesses (fuzz/corpus/{run,check,lesson}) and fuzz/stepwise.dict
+from the catalog's examples, the hard cases in tests/cases and the lessons. Usage: make_corpus.py STEPWISE"""
+import json, pathlib, shutil, subprocess, sys, tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+STEPWISE = sys.argv[1]
+OUT = ROOT / "fuzz" / "corpus"
+PER_ALGORITHM = 6          # hard cases per algorithm, beyond its example in every mode
+MAX_SEED = 8 * 1024        # bytes: larger seeds make slow runs and long mutations
+
+
+def sh(*args):
+    return subprocess.run([STEPWISE, *args], capture_output=True, text=True)
+
+
+def accepts(alg, mode, line):
+    with tempfile.NamedTemporaryFile("w", suffix=".jsonl") as f:
+        f.write(line + "\n")
+        f.flush()
+        return sh("run", alg, "--numeric", mode, "--inputs", f.name).returncode == 0
+
+
+catalog = [json.loads(l) for l in sh("list", "--json").stdout.splitlines()]
+shutil.rmtree(OUT, ignore_errors=True)
+for d in ("run", "check", "lesson"):
+    (OUT / d).mkdir(parents=True)
+
+cases = {}  # family -> [(algorithm or None, input line)]
+for f in sorted((ROOT / "tests" / "cases").glob("*/*.jsonl")):
+    for line in f.read_text().splitlines():
+        if line.startswith("{"):
+            c = json.loads(line)
+            if "input" in c:
+                cases.setdefault(f.parent.name, []).append((c.get("algorithm"), json.dumps(c["input"])))
+
+keys = set()
+def collect_keys(v):
+    if isinstance(v, dict):
+        for k, x in v.items():
+            keys.add(k)
+            collect_keys(x)
+    elif isinstance(v, list):
+        for x in v:
+            collect_keys(x)
+
+for a in catalog:
+    alg, example = a["id"], json.dumps(a["example"])
+    collect_keys(a["example"])
+    for mode in a["modes"]:
+        (OUT / "run" / f"{alg}-{mode}").write_text(f"{alg} {mode}\n{example}\n")
+        trace = sh("trace", alg, "--numeric", mode, "--input", example).stdout
+        if 0 < len(trace) <= MAX_SEED:
+            (OUT / "check" / f"{alg}-{mode}").write_text(trace)
+    mode = a["modes"][-1]
+    taken = 0
+    for named, line in cases.get(a["family"], []):
+        if taken == PER_ALGORITHM:
+            break
+        if named in (None, alg) and len(line) <= MAX_SEED and accepts(alg, mode, line):
+            taken += 1
+            (OUT / "run" / f"{alg}-case{taken}").write_text(f"{alg} {mode}\n{line}\n")
+
+for lesson in sorted((ROOT / "lessons").glob("*.md")):
+    shutil.copy(lesson, OUT / "lesson" / lesson.name)
+
+tokens = sorted(keys) + [a["id"] for a in catalog] + ["float", "double", "int", "filtered", "exact", "reference"]
+words = ["{", "}", "[", "]", ",", ":", "\"", "1/3", "-0", "1e308", "5e-324", "NaN", "Infinity", "-Infinity", "\\u0000",
+         "format", "stepwise-trace", "version", "algorithm", "numeric", "input", "result", "line", "kind", "vars",
+         "geometry", "---", "## on line ", "## on kind ", "title: ", "input: ", "numeric: ", "compare: ", "step: "]
+with open(ROOT / "fuzz" / "stepwise.dict", "w") as d:
+    d.write("# Tokens of stepwise's inputs, traces and lessons (written by fuzz/make_corpus.py).\n")
+    for t in dict.fromkeys(words + tokens):
+        d.write(json.dumps(t) + "\n")
+print({d: len(list((OUT / d).iterdir())) for d in ("run", "check", "lesson")})
