@@ -267,6 +267,28 @@ def table(rows):
         print(f"| {r['alg']} | {r['variant']} | {m['s']} | {m['est']:,} | {m['steps']:,} | {m['est'] / m['steps']:.1f} |")
 
 
+def summary(rows):
+    """Per algorithm and input family, the slowest run and trace over the modes (docs/cli.md's table)."""
+    print("\n| algorithm | input | estimated steps | limited by | run: s, MB (mode) | trace: s, MB (mode) |\n|---|---|---:|---|---|---|")
+    groups, fixed = {}, []
+    for r in rows:
+        if "run" in r: (groups.setdefault((r["alg"], r["variant"]), []) if r["s"] else fixed).append(r)
+    if fixed:  # constant steps or bounded at parse: one row, the slowest of them
+        groups[(", ".join(dict.fromkeys(r["alg"] for r in fixed)), "example and max")] = fixed
+    for (alg, var), rs in groups.items():
+        def worst(k):
+            r = max(rs, key=lambda r: r[k]["s"])
+            kb = max(x[k]["kb"] or 0 for x in rs)
+            st = r[k]["status"]
+            end = "" if st in ("ok", "timeout") else ", output budget reached" if "output passes" in st else ", refused: " + st[:40]
+            return f"{r[k]['s']:.1f}, {kb / 1024:.0f} ({r['mode']}" + (f", {r['alg']}" if var == "example and max" else "") + end + ")"
+        lim = rs[0]["limit"]
+        lim = "-" if lim is None else "step budget" if lim == "budget" else lim.split(":")[0]
+        est = max((r for r in rs if r.get("est")), key=lambda r: r["est"] * r["weight"], default=None)
+        est = "-" if est is None else f"{est['est']:,}" + (f" x {est['weight']}" if est["weight"] > 1 else "")
+        print(f"| {alg} | {var} | {est} | {lim} | {worst('run')} | {worst('trace')} |")
+
+
 def main():
     global SW, WORK
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -286,6 +308,7 @@ def main():
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     Path(args.out).write_text("".join(json.dumps(r) + "\n" for r in rows))
     table(rows)
+    summary(rows)
     print(f"\n{len(rows)} rows in {time.time() - t0:.0f} s; rows in {args.out}; inputs in {WORK}", file=sys.stderr)
 
 
