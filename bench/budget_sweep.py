@@ -282,8 +282,8 @@ def summary(rows):
             st = r[k]["status"]
             end = "" if st in ("ok", "timeout") else ", output budget reached" if "output passes" in st else ", refused: " + st[:40]
             return f"{r[k]['s']:.1f}, {kb / 1024:.0f} ({r['mode']}" + (f", {r['alg']}" if var == "example and max" else "") + end + ")"
-        lim = rs[0]["limit"]
-        lim = "-" if lim is None else "step budget" if lim == "budget" else lim.split(":")[0]
+        lims = dict.fromkeys("-" if r["limit"] is None else "step budget" if r["limit"] == "budget" else r["limit"].split(":")[0] for r in rs)
+        lim = " or ".join(lims)
         est = max((r for r in rs if r.get("est")), key=lambda r: r["est"] * r["weight"], default=None)
         est = "-" if est is None else f"{est['est']:,}" + (f" x {est['weight']}" if est["weight"] > 1 else "")
         print(f"| {alg} | {var} | {est} | {lim} | {worst('run')} | {worst('trace')} |")

@@ -114,7 +114,7 @@ template <bool Persp> struct InterpSpec {
   // The box's samples (a plot and a step each at most), two steps per row, the clipping.
   static std::size_t estimate_steps(const Input& in) { return static_cast<std::size_t>(2.5 * box_samples(projected_corners(in))) + 128; }
   // Budget units a step costs (measured, docs/cli.md: the largest accepted input within 10 s).
-  static std::size_t step_cost(Numeric n) { return n == Numeric::filtered || n == Numeric::exact ? 2 : 1; }
+  static std::size_t step_cost(Numeric n) { return n == Numeric::filtered || n == Numeric::exact ? 3 : 1; }
   static Output oracle(const Input& in) {
     const oracle::InterpSamples s = Persp ? oracle::perspective_samples(in.v, in.attrs, fill::w_near<Rational>())
                                           : oracle::affine_samples(in.v, in.attrs, fill::w_near<Rational>());

@@ -13,7 +13,7 @@ namespace {
 using namespace spatial;
 
 constexpr std::size_t kMaxSegments = 4096;
-constexpr std::size_t kMaxFragments = std::size_t{1} << 18;
+constexpr std::size_t kMaxFragments = std::size_t{1} << 17;  // the largest accepted exact trace within 10 s
 
 struct BspData {
   std::vector<std::array<double, 4>> segs;  // x0 y0 x1 y1
