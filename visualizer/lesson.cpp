@@ -1,4 +1,5 @@
 #include "lesson.hpp"
+#include "trace_model.hpp"
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
@@ -70,6 +71,12 @@ const Narration* Lesson::intro() const {
   for (const Narration& n : sections)
     if (n.key == Narration::Key::intro) return &n;
   return nullptr;
+}
+
+std::string narrate(const Lesson& lesson, const TraceModel& run, std::size_t step) {
+  const StepRecord& st = run.trace().at(step);
+  const Narration* n = lesson.narration_for(st.scope ? 0 : st.line, st.kind);
+  return n ? n->text : std::string();
 }
 
 Lesson parse_lesson(const std::string& text, const std::string& where) {

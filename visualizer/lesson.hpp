@@ -34,6 +34,12 @@ struct Lesson {
   const Narration* intro() const;
 };
 
+class TraceModel;
+
+// The narration `run` shows at `step`: the Markdown of the section that applies, with its {templates}
+// filled from the run's recorded values; empty if no section applies (docs/lessons.md).
+std::string narrate(const Lesson& lesson, const TraceModel& run, std::size_t step);
+
 // Parses lesson text; `where` names the file in errors. Throws InputError ("lesson.md:3: ...").
 // Validates the algorithm, the numerics and the input against the catalog. A relative "mesh" file
 // in the input is taken relative to where's directory.
