@@ -8,6 +8,7 @@
 #include "catalog.hpp"
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
+#include "quiz_command.hpp"    // visualizer/: `stepwise quiz`, `stepwise lesson lint`
 #include "render_command.hpp"  // visualizer/: `stepwise render`
 #endif
 
@@ -106,6 +107,12 @@ int main(int argc, char** argv) {
 #ifdef SW_HAVE_RENDER
   sw::vis::RenderOptions render_opts;
   auto* render = sw::vis::add_render_command(app, render_opts);
+  sw::vis::QuizOptions quiz_opts;
+  auto* quiz = sw::vis::add_quiz_command(app, quiz_opts);
+  auto* lesson_group = app.add_subcommand("lesson", "Lesson tools: lint");
+  lesson_group->require_subcommand(1);
+  sw::vis::LintOptions lint_opts;
+  auto* lint = sw::vis::add_lint_command(*lesson_group, lint_opts);
 #endif
 
   try {
@@ -120,6 +127,8 @@ int main(int argc, char** argv) {
   try {
 #ifdef SW_HAVE_RENDER
     if (*render) return sw::vis::run_render(render_opts);
+    if (*quiz) return sw::vis::run_quiz(quiz_opts);
+    if (*lint) return sw::vis::run_lint(lint_opts);
 #endif
     if (*schema) {
       std::cout << trace_schema();

@@ -82,12 +82,10 @@ TEST_CASE("visualizer lesson: front matter, narration keys and the manifest", "[
   CHECK(l.compare.numeric == Numeric::f32);
   CHECK(l.compare.other == nullptr);
   CHECK(l.start_step == 3);
-  REQUIRE(l.intro());
-  CHECK(l.intro()->text == "Intro text.");
-  REQUIRE(l.narration_for(8, StepKind::plot));
-  CHECK(l.narration_for(8, StepKind::plot)->text == "Plot here.");          // the line wins
-  CHECK(l.narration_for(9, StepKind::advance)->text == "Move.");            // else the kind
-  CHECK(l.narration_for(2, StepKind::decide) == nullptr);
+  CHECK(l.intro == "Intro text.");
+  REQUIRE(l.sections.size() == 2);
+  CHECK(l.sections[0].key == Narration::Key::line);
+  CHECK(l.sections[1].key == Narration::Key::kind);
 
   const auto files = lesson_manifest(std::filesystem::path(SW_SOURCE_DIR) / "lessons");
   REQUIRE(files.size() >= 3);

@@ -38,6 +38,7 @@ bool App::open_lesson(const std::filesystem::path& file) {
       error_ = file.filename().string() + ": " + err;
       return false;
     }
+    quiz_ = {};
     if (lesson_->show) set_view(*lesson_->show);
     set_step(lesson_->start_step);
     if (lesson_->focus) jump_and_focus(lesson_->start_step);
@@ -54,6 +55,7 @@ bool App::open_algorithm(const Algorithm& alg, const Json& input, Numeric numeri
     return false;
   }
   lesson_.reset();
+  quiz_ = {};
   return true;
 }
 
@@ -145,6 +147,15 @@ void App::apply_other_input(const Json& other_input) {
   if (!rerun_with_input(input_)) other_input_ = previous;
 }
 
+bool App::set_numerics(Numeric numeric, Comparison compare) {
+  if (!alg_) return false;
+  if (std::string err = load(*alg_, input_, numeric, compare, true); !err.empty()) {
+    error_ = err;
+    return false;
+  }
+  return true;
+}
+
 void App::rerun_numerics(Numeric numeric, Comparison compare) {
   if (!alg_) return;
   if (std::string err = load(*alg_, input_, numeric, compare, true); !err.empty()) edit_error_ = err;
@@ -214,7 +225,10 @@ bool App::set_view(View view) {
   return true;
 }
 
-void App::set_step(std::size_t step) { step_ = a_ ? std::min(step, a_->last()) : 0; }
+void App::set_step(std::size_t step) {
+  step = a_ ? std::min(step, a_->last()) : 0;
+  step_ = quiz_.on ? quiz_gate(step) : step;
+}
 
 void App::jump_and_focus(std::size_t step) {
   set_step(step);
@@ -242,6 +256,7 @@ void App::handle_keys() {
       const auto it = std::find(alg_->views.begin(), alg_->views.end(), view_);
       set_view(it == alg_->views.end() || it + 1 == alg_->views.end() ? alg_->views.front() : *(it + 1));
     }
+    if ((ch == 'q' || ch == 'Q') && lesson_) set_quiz(!quiz_.on);
   }
 }
 
@@ -305,9 +320,11 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
       if (i) ImGui::SameLine(0, 4);
       ImGui::PushID(i);
       if (i) canvases_[1]->follow(*canvases_[0]);
-      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, playing_ && i == 0, n > 1 ? (i ? label_b : label_a).c_str() : ""};
+      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, playing_ && i == 0, n > 1 ? (i ? label_b : label_a).c_str() : "", quiz_.on};
       const CanvasEvents ev = canvases_[i]->draw(in, ImVec2(w, avail.y));
-      if (ev.jump_to) set_step(*ev.jump_to), playing_ = false;
+      const Question* q = quiz_pending();
+      if (ev.clicked_cell && q && q->type == QuizType::pixel) answer(Json::array({ev.clicked_cell->x, ev.clicked_cell->y}));
+      else if (ev.jump_to) set_step(*ev.jump_to), playing_ = false;
       if (ev.drag) on_drag(*ev.drag);
       if (ev.edit) apply_input(*ev.edit);
       ImGui::PopID();

@@ -14,6 +14,7 @@
 #include "canvas.hpp"
 #include "compare.hpp"
 #include "lesson.hpp"
+#include "quiz.hpp"
 #include "theme.hpp"
 #include "trace_model.hpp"
 
@@ -27,6 +28,8 @@ class App {
   bool open_lesson(const std::filesystem::path& file);
   bool open_algorithm(const Algorithm& alg, const Json& input, Numeric numeric, Comparison compare = {});
   bool open_first_lesson();
+  // Re-runs what is open (a lesson stays open, its narration with it) in other number types.
+  bool set_numerics(Numeric numeric, Comparison compare);
   const std::string& error() const { return error_; }
   void show_error(std::string message) { error_ = std::move(message); }
   bool loaded() const { return a_ != nullptr; }
@@ -46,6 +49,18 @@ class App {
   View view() const { return view_; }
   // Goes to a step and centres the canvas on it, zoomed in enough to see single pixels.
   void jump_and_focus(std::size_t step);
+
+  // Quiz mode (a lesson only): the run switches to the quiz's exact number type, stepping forward
+  // stops at each question until it is answered, and the future is hidden (docs/lessons.md).
+  bool set_quiz(bool on);
+  bool quiz() const { return quiz_.on; }
+  // The question waiting at the current step, if any.
+  const Question* quiz_pending() const;
+  // Answers it (throws InputError for an answer of the wrong form); the grade, or nullopt if none waits.
+  std::optional<Grade> answer(const Json& answer);
+  std::pair<int, int> quiz_score() const { return {quiz_.right, quiz_.asked}; }
+
+  const Lesson* lesson() const { return lesson_ ? &*lesson_ : nullptr; }
 
   // Test hooks: what the last frame showed.
   std::uint32_t highlighted_line() const { return highlighted_line_; }
@@ -79,6 +94,8 @@ class App {
   void draw_listing(ImVec2 pos, ImVec2 size);
   void draw_state(ImVec2 pos, ImVec2 size);
   void draw_narration(ImVec2 pos, ImVec2 size);
+  void draw_quiz();  // the waiting question's prompt, answer buttons and feedback (panel_quiz.cpp)
+  void draw_markdown(const std::string& text);
 
   TextureHost* textures_;
   theme::Fonts fonts_;
@@ -104,6 +121,21 @@ class App {
   bool view_tab_pending_ = false;  // the view changed outside the tabs: select its tab
   void show_view(View view);
   void draw_view_tabs();
+
+  struct QuizState {
+    bool on = false;
+    std::vector<Question> questions;  // on the quiz run, by step
+    struct Answered {
+      std::size_t step;
+      Grade grade;
+      std::string answer;
+    };
+    std::vector<Answered> answered;
+    int right = 0, asked = 0;
+  } quiz_;
+  const QuizState::Answered* quiz_answered(std::size_t step) const;
+  // Stops a forward move at the first unanswered question in [step_, target); returns where to go.
+  std::size_t quiz_gate(std::size_t target);
 
   // Timeline.
   std::size_t step_ = 0;

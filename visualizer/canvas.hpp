@@ -13,6 +13,7 @@ namespace sw::vis {
 // What the user did on the canvas this frame; the app acts on it.
 struct CanvasEvents {
   std::optional<std::size_t> jump_to;  // clicked a plotted pixel: go to its step
+  std::optional<Pixel> clicked_cell;   // clicked a cell (without dragging): a quiz answer
   struct Drag {
     int handle;       // the index of the declared handle (Algorithm::handles)
     double x, y;      // world position under the mouse
@@ -29,6 +30,7 @@ struct CanvasInput {
   bool keys = false;       // this canvas takes the pan/zoom keys
   bool follow = false;     // keep the current step in view (while playing)
   const char* label = "";  // drawn in the corner (e.g. the number type)
+  bool hide_future = false;  // quiz mode: say nothing of later steps (tooltips, jumps)
 };
 
 class Canvas {

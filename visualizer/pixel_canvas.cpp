@@ -132,8 +132,10 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
       ev.drag = CanvasEvents::Drag{dragging_, w[0], w[1], true};
     } else if (!moved_ && in.model) {
       const auto w = to_world(io.MousePos);
-      const std::uint32_t s = in.model->step_of_cell({std::int64_t(std::floor(w[0] + 0.5)), std::int64_t(std::floor(w[1] + 0.5))});
-      if (s != kNoStep) ev.jump_to = s;
+      const Pixel c{std::int64_t(std::floor(w[0] + 0.5)), std::int64_t(std::floor(w[1] + 0.5))};
+      const std::uint32_t s = in.model->step_of_cell(c);
+      ev.clicked_cell = c;
+      if (s != kNoStep && !(in.hide_future && s > in.step)) ev.jump_to = s;
     }
     dragging_ = -1;
   }
@@ -160,10 +162,11 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
     if (const auto r = cell_rect(c); r && scale_ >= 4) {
       dl->AddRect(ImVec2((*r)[0], (*r)[1]), ImVec2((*r)[2], (*r)[3]), theme::kHover, 0, 0, 1.5f);
     }
-    const std::uint32_t s = in.model->step_of_cell(c);
+    std::uint32_t s = in.model->step_of_cell(c);
+    if (in.hide_future && s != kNoStep && s > in.step) s = kNoStep;
     ImGui::BeginTooltip();
     ImGui::Text("cell (%lld, %lld)   at x = %.3f, y = %.3f", (long long)c.x, (long long)c.y, w[0], w[1]);
-    if (s == kNoStep) ImGui::TextColored(theme::kDim, "never plotted");
+    if (s == kNoStep) ImGui::TextColored(theme::kDim, in.hide_future ? "not plotted so far" : "never plotted");
     else ImGui::Text("plotted at step %u%s - click to jump there", s, s > in.step ? " (later)" : "");
     ImGui::EndTooltip();
   }

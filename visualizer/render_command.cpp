@@ -82,7 +82,8 @@ int run_render(const RenderOptions& o) {
   app.set_budget(budget);
   const bool ok = lesson ? app.open_lesson(o.lesson) : app.open_algorithm(*alg, input, numeric, compare);
   if (!ok) throw InputError(app.error());
-  if (lesson && (!o.numeric.empty() || !o.compare.empty()) && !app.open_algorithm(*alg, input, numeric, compare)) throw InputError(app.error());
+  // A lesson with other number types keeps its narration: each run narrates its own steps.
+  if (lesson && (!o.numeric.empty() || !o.compare.empty()) && !app.set_numerics(numeric, compare)) throw InputError(app.error());
   if (view) app.set_view(*view);
   const std::size_t last = app.steps() - 1;
   auto check_step = [&](std::size_t s, const char* what) {

@@ -180,6 +180,23 @@ std::vector<VarState> TraceModel::state_at(std::size_t step) const {
   return out;
 }
 
+const VarRecord* TraceModel::latest_var(std::size_t step, std::string_view name) const {
+  if (!size()) return nullptr;
+  step = std::min(step, last());
+  const auto it = std::find(names_.begin(), names_.end(), name);
+  if (it == names_.end()) return nullptr;
+  const auto k = static_cast<std::size_t>(it - names_.begin());
+  const TraceView& t = *rec_.trace;
+  // Scan back to the step's checkpoint, then take the checkpoint's entry.
+  for (std::size_t s = step + 1; s-- > step / kCheckpoint * kCheckpoint;) {
+    const StepRecord& st = t.at(s);
+    for (std::uint32_t v = st.var_end; v-- > st.var_begin;)
+      if (name_of_var_[v] == k) return &t.var_at(v);
+  }
+  const std::uint32_t v = checkpoints_[step / kCheckpoint * names_.size() + k];
+  return v == kNoStep ? nullptr : &t.var_at(v);
+}
+
 std::optional<std::size_t> TraceModel::find_kind(std::size_t from, StepKind kind, bool forward) const {
   const TraceView& t = *rec_.trace;
   if (forward) {

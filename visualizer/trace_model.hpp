@@ -82,6 +82,8 @@ class TraceModel {
   // Every variable seen up to `step` (in first-appearance order) with its latest value.
   std::vector<VarState> state_at(std::size_t step) const;
   std::span<const std::string_view> var_names() const { return names_; }
+  // The latest record of the variable `name` at or before `step`; nullptr if none yet.
+  const VarRecord* latest_var(std::size_t step, std::string_view name) const;
 
   // First step > from (or < from, backward) of the given kind; nullopt if none.
   std::optional<std::size_t> find_kind(std::size_t from, StepKind kind, bool forward) const;

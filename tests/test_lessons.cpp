@@ -1,0 +1,154 @@
+// Lessons v2: section choice, templates, conditions, the lint on every lesson and on broken ones,
+// and quizzes graded against the exact trace.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include "lesson.hpp"
+#include "quiz.hpp"
+#include "trace_model.hpp"
+
+using namespace sw;
+using namespace sw::vis;
+
+namespace {
+
+const std::filesystem::path kLessons = std::filesystem::path(SW_SOURCE_DIR) / "lessons";
+
+std::shared_ptr<const TraceModel> run_of(const Lesson& l, Numeric n) { return record_model(*l.algorithm, l.input, n); }
+
+std::optional<std::size_t> first_step_at(const TraceModel& m, std::string_view line) {
+  const std::uint32_t id = m.algorithm().listing.find(line);
+  for (std::size_t s = 0; s < m.size(); ++s)
+    if (m.trace().at(s).scope == 0 && m.trace().at(s).line == id) return s;
+  return std::nullopt;
+}
+
+}  // namespace
+
+TEST_CASE("lessons: the most specific section wins and templates quote the run's values", "[lesson]") {
+  // Bresenham from (1, 2) to (13, 7): A = 12, B = 5, so e starts at 2B - A = -2 (by hand).
+  const Lesson l = parse_lesson(
+      "---\nalgorithm: bresenham-line\ninput: {\"p0\":[1,2],\"p1\":[13,7]}\nnumeric: int\n---\nIntro.\n\n"
+      "## on kind plot\nA plot.\n## on line plot\nPlot at e = {e}.\n## on line plot if e < 0\nBelow: e = {e}, i = {i}.\n"
+      "## on step 0\nThe very first step.\n",
+      "t.md");
+  const auto m = run_of(l, Numeric::integer);
+  CHECK(narrate(l, *m, 0) == "The very first step.");
+  const auto plot = first_step_at(*m, "plot");
+  REQUIRE(plot);
+  CHECK(narrate(l, *m, *plot) == "Below: e = -2, i = 1.");
+  // Some later plot has e >= 0: there the unconditioned line section speaks.
+  bool saw_other = false;
+  for (std::size_t s = *plot + 1; s < m->size(); ++s)
+    if (m->trace().at(s).line == m->trace().at(*plot).line && m->trace().at(s).scope == 0) {
+      const std::string t = narrate(l, *m, s);
+      CHECK((t.rfind("Below: e = -", 0) == 0 || t.rfind("Plot at e = ", 0) == 0));
+      if (t.rfind("Plot at e = ", 0) == 0) {
+        saw_other = true;
+        CHECK(t.find("= -") == std::string::npos);  // the condition held exactly where it should not
+      }
+    }
+  CHECK(saw_other);
+  const Filled bad = fill_templates("{nope} and {e:hex}", *m, *plot);
+  CHECK(bad.problems.size() == 2);
+}
+
+TEST_CASE("lessons: exact values show with their decimal, and for-sections narrate one run", "[lesson]") {
+  const Lesson l = parse_lesson(
+      "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[3,1]}\nnumeric: exact\ncompare: float\n---\n"
+      "## on line plot\nq.y is {qy}.\n## on line plot for float\nIn float q.y is {qy}.\n",
+      "t.md");
+  const auto exact = run_of(l, Numeric::exact), fl = run_of(l, Numeric::f32);
+  const auto plot = first_step_at(*exact, "plot");
+  REQUIRE(plot);
+  // The second plot has q.y = 1/3 exactly.
+  std::size_t second = *plot + 1;
+  while (second < exact->size() && exact->trace().at(second).line != exact->trace().at(*plot).line) ++second;
+  REQUIRE(second < exact->size());
+  CHECK(narrate(l, *exact, second) == "q.y is 1/3 \xE2\x89\x88 0.333333.");
+  CHECK(narrate(l, *fl, second).rfind("In float q.y is 0.33333", 0) == 0);
+}
+
+TEST_CASE("lessons: every lesson passes the lint (every step of every run walked)", "[lesson][lint]") {
+  for (const auto& f : lesson_manifest(kLessons)) {
+    INFO(f);
+    const auto problems = lint_lesson(f);
+    for (const auto& p : problems) UNSCOPED_INFO(p);
+    CHECK(problems.empty());
+  }
+}
+
+TEST_CASE("lessons: the lint fails each broken lesson with the problem it holds", "[lesson][lint]") {
+  // Each file's first front-matter comment says what the lint must report: "# expect: TEXT".
+  const auto dir = std::filesystem::path(SW_SOURCE_DIR) / "tests" / "cases" / "lessons-broken";
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    std::ifstream in(e.path());
+    std::string first, second;
+    std::getline(in, first);
+    std::getline(in, second);
+    REQUIRE(second.rfind("# expect: ", 0) == 0);
+    const std::string expect = second.substr(10);
+    INFO(e.path().filename() << " should report: " << expect);
+    const auto problems = lint_lesson(e.path());
+    REQUIRE(!problems.empty());
+    bool found = false;
+    for (const auto& p : problems) {
+      UNSCOPED_INFO(p);
+      found |= p.find(expect) != std::string::npos && p.rfind(e.path().string() + ":", 0) == 0;
+    }
+    CHECK(found);
+    ++files;
+  }
+  CHECK(files >= 10);
+}
+
+TEST_CASE("lessons: quiz answers are graded against the exact trace", "[lesson][quiz]") {
+  SECTION("pixel: the DDA's next pixel") {
+    // p0 = (1.25, 2.5), p1 = (12.75, 7.25): slope 4.75/11.5; at x = 2, y = 2.8098 -> (2, 3); at x = 3,
+    // y = 3.2228 -> (3, 3) (by hand). So the question on the step that plots (2, 3) expects (3, 3).
+    const Lesson l = load_lesson(kLessons / "01-dda-line.md");
+    const auto m = run_of(l, quiz_numeric(l));
+    const std::uint32_t s = m->step_of_cell({2, 3});
+    REQUIRE(s != kNoStep);
+    const auto q = question_at(l, *m, s);
+    REQUIRE(q);
+    REQUIRE(q->type == QuizType::pixel);
+    CHECK(grade(*q, Json::array({3, 3})).right);
+    CHECK_FALSE(grade(*q, Json::array({3, 4})).right);
+    CHECK(grade(*q, Json::array({3, 4})).expected == "(3, 3)");
+    CHECK_THROWS_AS(grade(*q, "up"), InputError);
+  }
+  SECTION("sign: Bresenham's first decision is negative") {
+    const Lesson l = load_lesson(kLessons / "03-bresenham.md");
+    const auto m = run_of(l, quiz_numeric(l));
+    const auto at = first_step_at(*m, "signs");
+    REQUIRE(at);
+    const auto q = question_at(l, *m, *at);
+    REQUIRE(q);
+    REQUIRE(q->type == QuizType::sign);
+    CHECK(grade(*q, "negative").right);  // e = 2B - A = 2 * 5 - 12 = -2
+    CHECK_FALSE(grade(*q, 1).right);
+    CHECK_FALSE(grade(*q, "zero").right);
+  }
+  SECTION("hit: the exact ray hits the shared edge, a wrong guess does not") {
+    const Lesson l = load_lesson(kLessons / "05-triangle-crack.md");
+    const auto m = run_of(l, quiz_numeric(l));
+    const auto qs = quiz_questions(l, *m);
+    const auto it = std::find_if(qs.begin(), qs.end(), [](const Question& q) { return q.type == QuizType::hit; });
+    REQUIRE(it != qs.end());
+    CHECK(grade(*it, "hit").right);  // the point (917/256, 917/256, 0) lies on the diagonal: u = 0
+    CHECK_FALSE(grade(*it, false).right);
+  }
+  SECTION("branch: the grid walk's pick at a corner") {
+    const Lesson l = load_lesson(kLessons / "02-grid-walk.md");
+    const auto m = run_of(l, quiz_numeric(l));
+    const auto qs = quiz_questions(l, *m);
+    const auto it = std::find_if(qs.begin(), qs.end(), [](const Question& q) { return q.type == QuizType::branch; });
+    REQUIRE(it != qs.end());
+    REQUIRE(it->choices.size() >= 2);
+    CHECK(grade(*it, it->answer).right);
+    const std::string other = it->choices[0] == it->answer ? it->choices[1] : it->choices[0];
+    CHECK_FALSE(grade(*it, other).right);
+    CHECK_THROWS_AS(grade(*it, "no-such-line"), InputError);
+  }
+}
