@@ -63,11 +63,14 @@ for a in catalog:
 
 for lesson in sorted((ROOT / "lessons").glob("*.md")):
     shutil.copy(lesson, OUT / "lesson" / lesson.name)
+for lesson in sorted((ROOT / "tests" / "cases" / "lessons-broken").glob("*.md")):
+    shutil.copy(lesson, OUT / "lesson" / ("broken-" + lesson.name))
 
 tokens = sorted(keys) + [a["id"] for a in catalog] + ["float", "double", "int", "filtered", "exact", "reference"]
 words = ["{", "}", "[", "]", ",", ":", "\"", "1/3", "-0", "1e308", "5e-324", "NaN", "Infinity", "-Infinity", "\\u0000",
          "format", "stepwise-trace", "version", "algorithm", "numeric", "input", "result", "line", "kind", "vars",
-         "geometry", "---", "## on line ", "## on kind ", "title: ", "input: ", "numeric: ", "compare: ", "step: "]
+         "geometry", "---", "## on line ", "## on kind ", "## on step ", " for float", " if ", " and ", " < ", " >= ", " == ", "{", "}", ":exact}",
+         "## quiz pixel on ", "## quiz branch on ", "## quiz sign e on ", "## quiz hit on ", "**", "`", "1. ", "- ", "title: ", "input: ", "numeric: ", "compare: ", "step: "]
 with open(ROOT / "fuzz" / "stepwise.dict", "w") as d:
     d.write("# Tokens of stepwise's inputs, traces and lessons (written by fuzz/make_corpus.py).\n")
     for t in dict.fromkeys(words + tokens):

@@ -68,6 +68,21 @@ TEST_CASE("lessons: exact values show with their decimal, and for-sections narra
   CHECK(narrate(l, *fl, second).rfind("In float q.y is 0.33333", 0) == 0);
 }
 
+TEST_CASE("lessons: a byte-order mark is skipped and a nested listing's line can be named", "[lesson]") {
+  const Lesson l = parse_lesson(
+      "\xEF\xBB\xBF---\nalgorithm: ray-triangles\ninput: {\"triangles\":[[[0,0,0],[1,0,0],[0,1,0]]],\"test\":\"mt\",\"ray\":{\"o\":[0.25,0.25,1],\"d\":[0,0,-1]}}\n---\n"
+      "## on line ray-triangle-mt/u\nu = {u}.\n",
+      "bom.md");
+  const auto m = run_of(l, Numeric::exact);
+  std::size_t shown = 0;
+  for (std::size_t s = 0; s < m->size(); ++s)
+    if (const std::string t = narrate(l, *m, s); !t.empty()) {
+      CHECK(t == "u = 1/4 \xE2\x89\x88 0.25.");  // u is the weight of v1 = (1, 0, 0): the hit (1/4, 1/4) is 1/4 of the way
+      ++shown;
+    }
+  CHECK(shown == 1);
+}
+
 TEST_CASE("lessons: every lesson passes the lint (every step of every run walked)", "[lesson][lint]") {
   for (const auto& f : lesson_manifest(kLessons)) {
     INFO(f);

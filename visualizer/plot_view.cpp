@@ -98,6 +98,9 @@ CanvasEvents PlotCanvas::draw_inside(const CanvasInput& in, ImVec2 size) {
   const bool diff = difference();
   std::vector<double> series(n);
   for (std::size_t r = 0; r < n; ++r) series[r] = diff ? values_[r] - exact_[r] : values_[r];
+  // Quiz mode: rows after the current one are not drawn (the exact run is the run shown then).
+  if (const auto now = table_.row_of(in.step); in.hide_future && now)
+    for (std::size_t r = *now + 1; r < n; ++r) series[r] = NAN;
   double lo = INFINITY, hi = -INFINITY;
   auto extend = [&](const std::vector<double>& v) {
     for (double x : v)

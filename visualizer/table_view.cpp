@@ -131,7 +131,8 @@ CanvasEvents TableCanvas::draw(const CanvasInput& in, ImVec2 size) {
     scroll_pending_ = false;
   }
   ImGuiListClipper clipper;
-  clipper.Begin(static_cast<int>(table_.rows.size()), row_h);
+  // Quiz mode: no row after the current one.
+  clipper.Begin(static_cast<int>(in.hide_future && highlighted_ ? *highlighted_ + 1 : table_.rows.size()), row_h);
   char buf[32];
   while (clipper.Step())
     for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
