@@ -8,6 +8,7 @@
 #include "catalog.hpp"
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
+#include "lesson_command.hpp"  // visualizer/: `stepwise lesson export`
 #include "render_command.hpp"  // visualizer/: `stepwise render`
 #endif
 
@@ -106,6 +107,8 @@ int main(int argc, char** argv) {
 #ifdef SW_HAVE_RENDER
   sw::vis::RenderOptions render_opts;
   auto* render = sw::vis::add_render_command(app, render_opts);
+  sw::vis::LessonCommands lesson_cmds;
+  sw::vis::add_lesson_commands(app, lesson_cmds);
 #endif
 
   try {
@@ -120,6 +123,7 @@ int main(int argc, char** argv) {
   try {
 #ifdef SW_HAVE_RENDER
     if (*render) return sw::vis::run_render(render_opts);
+    if (*lesson_cmds.group) return sw::vis::run_lesson_commands(lesson_cmds);
 #endif
     if (*schema) {
       std::cout << trace_schema();
