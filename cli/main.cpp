@@ -8,7 +8,8 @@
 #include "catalog.hpp"
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
-#include "quiz_command.hpp"    // visualizer/: `stepwise quiz`, `stepwise lesson lint`
+#include "lesson_command.hpp"  // visualizer/: `stepwise lesson export|lint`
+#include "quiz_command.hpp"    // visualizer/: `stepwise quiz`
 #include "render_command.hpp"  // visualizer/: `stepwise render`
 #endif
 
@@ -109,10 +110,8 @@ int main(int argc, char** argv) {
   auto* render = sw::vis::add_render_command(app, render_opts);
   sw::vis::QuizOptions quiz_opts;
   auto* quiz = sw::vis::add_quiz_command(app, quiz_opts);
-  auto* lesson_group = app.add_subcommand("lesson", "Lesson tools: lint");
-  lesson_group->require_subcommand(1);
-  sw::vis::LintOptions lint_opts;
-  auto* lint = sw::vis::add_lint_command(*lesson_group, lint_opts);
+  sw::vis::LessonCommands lesson_cmds;
+  sw::vis::add_lesson_commands(app, lesson_cmds);
 #endif
 
   try {
@@ -128,7 +127,7 @@ int main(int argc, char** argv) {
 #ifdef SW_HAVE_RENDER
     if (*render) return sw::vis::run_render(render_opts);
     if (*quiz) return sw::vis::run_quiz(quiz_opts);
-    if (*lint) return sw::vis::run_lint(lint_opts);
+    if (*lesson_cmds.group) return sw::vis::run_lesson_commands(lesson_cmds);
 #endif
     if (*schema) {
       std::cout << trace_schema();

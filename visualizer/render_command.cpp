@@ -8,9 +8,8 @@
 #include "image_io.hpp"
 
 namespace sw::vis {
-namespace {
 
-std::pair<int, int> parse_size(const std::string& s) {
+std::pair<int, int> parse_frame_size(const std::string& s) {
   const auto x = s.find('x');
   int w = 0, h = 0;
   const bool ok = x != std::string::npos && std::from_chars(s.data(), s.data() + x, w).ptr == s.data() + x &&
@@ -19,8 +18,6 @@ std::pair<int, int> parse_size(const std::string& s) {
     throw InputError("--size '" + s + "': expected WxH with 320 <= W, 240 <= H and both <= 4096");
   return {w, h};
 }
-
-}  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   auto* r = app.add_subcommand("render", "Render visualizer frames headless (OSMesa): a PNG, or a GIF of a step range");
@@ -48,7 +45,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
 int run_render(const RenderOptions& o) {
   if (o.lesson.empty() == o.algorithm.empty()) throw InputError("render: give --lesson FILE or --algorithm ALG --input JSON");
   if (o.out.empty() == o.gif.empty()) throw InputError("render: give --out frame.png or --gif anim.gif");
-  const auto [w, h] = parse_size(o.size);
+  const auto [w, h] = parse_frame_size(o.size);
   // Check everything that can be checked before starting GL.
   std::optional<Lesson> lesson;
   const Algorithm* alg = nullptr;

@@ -18,6 +18,9 @@ struct RenderOptions {
   std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
 };
 
+// "WxH" with 320 <= W, 240 <= H, both <= 4096; throws InputError naming --size otherwise.
+std::pair<int, int> parse_frame_size(const std::string& size);
+
 // Adds the subcommand; main calls run_render when it was given.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& opts);
 // Returns 0; throws InputError (one line, exit 2 in main) on bad input, writing no partial file.

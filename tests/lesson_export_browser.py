@@ -1,0 +1,199 @@
+#!/usr/bin/env python3
+"""Drives an exported lesson page in headless Chromium through chromedriver's WebDriver HTTP API.
+
+Usage: lesson_export_browser.py STEPWISE LESSON WORKDIR [WxH]
+
+Exports LESSON with `stepwise lesson export`, opens DIR/index.html from file://, and checks: no
+console message of level SEVERE; ArrowRight pressed N times shows step start + N, and its frame is
+byte-identical to `stepwise render --lesson LESSON --step N --size WxH`; ArrowLeft goes back; the
+narration shown is the page data's for that step, and a step on a narrated line shows that
+section's text. Exits 1 (never skips) when chromium or chromedriver is missing.
+Standard library only (urllib, json).
+"""
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import time
+import urllib.error
+import urllib.request
+
+RIGHT, LEFT = "\ue014", "\ue012"
+
+
+def fail(msg):
+    print("FAIL: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Driver:
+    def __init__(self, base):
+        self.base = base
+        self.sid = None
+
+    def call(self, method, path, body=None):
+        data = None if body is None else json.dumps(body).encode()
+        req = urllib.request.Request(self.base + path, data=data, method=method,
+                                     headers={"Content-Type": "application/json"})
+        try:
+            with urllib.request.urlopen(req, timeout=60) as r:
+                return json.loads(r.read() or b"null")["value"]
+        except urllib.error.HTTPError as e:
+            fail("%s %s: HTTP %d %s" % (method, path, e.code, e.read()[:400]))
+
+    def s(self, method, path, body=None):
+        return self.call(method, "/session/%s%s" % (self.sid, path), body)
+
+    def js(self, script, *args):
+        return self.s("POST", "/execute/sync", {"script": script, "args": list(args)})
+
+    def key(self, k):
+        actions = [{"type": "keyDown", "value": k}, {"type": "keyUp", "value": k}]
+        self.s("POST", "/actions", {"actions": [{"type": "key", "id": "kb", "actions": actions}]})
+
+    def logs(self):
+        return self.s("POST", "/se/log", {"type": "browser"})
+
+
+def shown(d):
+    return d.js("""
+      const img = document.getElementById('frame');
+      return {step: Number(document.getElementById('step').textContent), src: img.getAttribute('src'),
+              loaded: img.complete && img.naturalWidth, kind: document.getElementById('kind').textContent,
+              line: Number((document.querySelector('#listing li.current') || {dataset: {line: 0}}).dataset.line),
+              narration: document.getElementById('narration').innerHTML};""")
+
+
+def wait_loaded(d):
+    for _ in range(200):  # bounded: 200 x 50 ms
+        st = shown(d)
+        if st["loaded"]:
+            return st
+        time.sleep(0.05)
+    fail("the frame %s never loaded" % st["src"])
+
+
+def main():
+    if len(sys.argv) < 4:
+        fail("usage: lesson_export_browser.py STEPWISE LESSON WORKDIR [WxH]")
+    stepwise, lesson, work = sys.argv[1], os.path.abspath(sys.argv[2]), os.path.abspath(sys.argv[3])
+    size = sys.argv[4] if len(sys.argv) > 4 else "400x260"
+    chromium, chromedriver = shutil.which("chromium"), shutil.which("chromedriver")
+    if not chromium or not chromedriver:
+        fail("chromium and chromedriver are needed (scripts/setup.sh installs them)")
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    page_dir = os.path.join(work, "page")
+    r = subprocess.run([stepwise, "lesson", "export", lesson, "--html", page_dir, "--size", size],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("export exited %d: %s" % (r.returncode, r.stderr))
+
+    port = free_port()
+    log = open(os.path.join(work, "chromedriver.log"), "w")
+    proc = subprocess.Popen([chromedriver, "--port=%d" % port], stdout=log, stderr=subprocess.STDOUT)
+    d = Driver("http://127.0.0.1:%d" % port)
+    try:
+        for _ in range(300):  # bounded: up to 30 s for chromedriver to listen
+            try:
+                if d.call("GET", "/status")["ready"]:
+                    break
+            except (urllib.error.URLError, ConnectionError):
+                pass
+            time.sleep(0.1)
+        else:
+            fail("chromedriver did not start")
+        caps = {"browserName": "chrome", "goog:loggingPrefs": {"browser": "ALL"},
+                "goog:chromeOptions": {"binary": chromium, "args": [
+                    "--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
+                    "--user-data-dir=" + os.path.join(work, "profile")]}}
+        d.sid = d.call("POST", "/session", {"capabilities": {"alwaysMatch": caps}})["sessionId"]
+        check_page(d, stepwise, lesson, work, page_dir, size)
+    finally:
+        if d.sid:
+            try:
+                d.call("DELETE", "/session/" + d.sid)
+            except SystemExit:
+                pass
+        proc.terminate()
+        proc.wait(timeout=30)
+        log.close()
+    print("ok: the exported page steps, shows the rendered frames and the narration")
+
+
+def check_page(d, stepwise, lesson, work, page_dir, size):
+    d.s("POST", "/url", {"url": "file://" + os.path.join(page_dir, "index.html")})
+    data = d.js("return JSON.parse(document.getElementById('page-data').textContent);")
+    steps = data["steps"]
+    start = wait_loaded(d)
+    first = steps[0]["step"]
+    at = steps[data["start"]]["step"]
+    if start["step"] != at or start["src"] != steps[data["start"]]["frame"]:
+        fail("the page opened on %s, not on the lesson's start step %d" % (start, at))
+    n = min(5, steps[-1]["step"] - at)
+    if n < 2:
+        fail("the lesson is too short to step through (start %d, last %d)" % (at, steps[-1]["step"]))
+    for _ in range(n):
+        d.key(RIGHT)
+    st = wait_loaded(d)
+    want = at + n
+    entry = steps[want - first]
+    if st["step"] != want or st["src"] != entry["frame"] or st["src"] != "frames/%04d.png" % want:
+        fail("after %d x ArrowRight from step %d: showing %s, expected step %d" % (n, at, st, want))
+    if st["kind"] != entry["kind"] or st["line"] != entry["line"]:
+        fail("step %d shows kind %s line %d; the page data says %s line %d" % (want, st["kind"], st["line"], entry["kind"], entry["line"]))
+    same = d.js("const t = document.createElement('div'); t.innerHTML = arguments[0];"
+                "return t.innerHTML === document.getElementById('narration').innerHTML;", data["narrations"][entry["narration"]])
+    if not same:
+        fail("step %d shows narration %r, the page data has %r" % (want, st["narration"], data["narrations"][entry["narration"]]))
+
+    png = os.path.join(work, "render.png")
+    r = subprocess.run([stepwise, "render", "--lesson", lesson, "--step", str(want), "--size", size, "--out", png],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("render exited %d: %s" % (r.returncode, r.stderr))
+    with open(png, "rb") as a, open(os.path.join(page_dir, st["src"]), "rb") as b:
+        if a.read() != b.read():
+            fail("the page's frame for step %d differs from `stepwise render --step %d`" % (want, want))
+
+    d.key(LEFT)
+    back = wait_loaded(d)
+    if back["step"] != want - 1 or back["src"] != steps[want - 1 - first]["frame"]:
+        fail("ArrowLeft from step %d shows %s" % (want, back))
+
+    # A narrated line: the lesson's section text must show there (narrate's Markdown as HTML).
+    names = [l["name"] for l in data["listings"][0]["lines"]]
+    with open(lesson, encoding="utf-8") as f:
+        text = f.read()
+    narrated = [s for s in steps if s["listing"] == 0 and "## on line %s\n" % names[s["line"] - 1] in text]
+    if not narrated:
+        fail("no step of %s is on a line the lesson narrates" % lesson)
+    s = narrated[-1]
+    section = text.split("## on line %s\n" % names[s["line"] - 1], 1)[1].split("\n## ", 1)[0]
+    first_words = " ".join(section.split()[:3]).replace("`", "").replace("**", "")
+    d.js("document.getElementById('slider').value = arguments[0];"
+         "document.getElementById('slider').dispatchEvent(new Event('input'));", s["step"] - first)
+    shown_text = d.js("return document.getElementById('narration').textContent;")
+    if first_words not in " ".join(shown_text.split()):
+        fail("step %d (line %s) shows %r, not its section starting %r" % (s["step"], names[s["line"] - 1], shown_text, first_words))
+    if shown(d)["step"] != s["step"]:
+        fail("the slider did not move to step %d" % s["step"])
+
+    d.js("document.getElementById('last').click();")
+    if wait_loaded(d)["step"] != steps[-1]["step"]:
+        fail("the last-step button did not show step %d" % steps[-1]["step"])
+    severe = [e for e in d.logs() if e.get("level") == "SEVERE"]
+    if severe:
+        fail("console errors: %s" % severe)
+
+
+if __name__ == "__main__":
+    main()

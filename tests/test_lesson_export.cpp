@@ -1,0 +1,128 @@
+// `stepwise lesson export --html DIR`: the files of a page, replacing an earlier export, bad input
+// (exit 2, one line, nothing left in DIR's parent), and the page's escaping. The page in a browser:
+// tests/lesson_export_browser.py.
+#ifdef SW_HAVE_VISUALIZER
+#include <catch2/catch.hpp>
+#include <stb_image.h>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include "cli_harness.hpp"
+#include "html_page.hpp"
+
+namespace fs = std::filesystem;
+using sw::testing::run_stepwise;
+using sw::testing::sh_quote;
+
+namespace {
+
+std::string lesson(const char* name) { return sh_quote((fs::path(SW_SOURCE_DIR) / "lessons" / name).string()); }
+
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
+}
+
+// The page data blob of an exported index.html.
+sw::Json page_data(const fs::path& index) {
+  const std::string html = sw::testing::slurp(index);
+  const std::string open = "<script type=\"application/json\" id=\"page-data\">";
+  const auto a = html.find(open);
+  REQUIRE(a != std::string::npos);
+  const auto b = html.find("</script>", a);
+  REQUIRE(b != std::string::npos);
+  return sw::Json::parse(html.substr(a + open.size(), b - a - open.size()));
+}
+
+// Runs an export that must fail: exit 2, one line naming `expect`, and `dir` left as it was.
+void check_refused(const std::string& args, const fs::path& dir, const std::string& expect) {
+  const std::set<std::string> before = names_in(dir);
+  const auto r = run_stepwise("lesson export " + args);
+  INFO(args << "\n" << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.find(expect) != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK(names_in(dir) == before);
+}
+
+}  // namespace
+
+TEST_CASE("visualizer lesson export: a step range writes index.html and one frame per step", "[visualizer][cli]") {
+  const fs::path dir = sw::testing::scratch("export-range");
+  const fs::path page = dir / "page";
+  auto r = run_stepwise("lesson export " + lesson("02-grid-walk.md") + " --html " + sh_quote(page.string()) +
+                        " --size 320x240 --from 2 --to 5");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(names_in(dir) == std::set<std::string>{"page"});  // no temporary left beside it
+  CHECK(names_in(page) == std::set<std::string>{"index.html", "frames"});
+  CHECK(names_in(page / "frames") == std::set<std::string>{"0002.png", "0003.png", "0004.png", "0005.png"});
+  for (const auto& e : fs::directory_iterator(page / "frames")) {
+    int w = 0, h = 0, n = 0;
+    REQUIRE(stbi_info(e.path().c_str(), &w, &h, &n));
+    CHECK(w == 320);
+    CHECK(h == 240);
+  }
+  const sw::Json data = page_data(page / "index.html");
+  REQUIRE(data.at("steps").size() == 4);
+  CHECK(data.at("algorithm") == "dda-grid-walk");
+  CHECK(data.at("start") == 2);  // the lesson's step: 4
+  for (std::size_t i = 0; i < 4; ++i) {
+    const sw::Json& s = data.at("steps")[i];
+    CHECK(s.at("step") == 2 + i);
+    CHECK(s.at("frame") == "frames/000" + std::to_string(2 + i) + ".png");
+    CHECK(s.at("narration").get<std::size_t>() < data.at("narrations").size());
+    CHECK(s.at("line").get<std::size_t>() <= data.at("listings")[0].at("lines").size());
+  }
+
+  // A second export replaces the first: only its own frames remain.
+  r = run_stepwise("lesson export " + lesson("02-grid-walk.md") + " --html " + sh_quote(page.string()) +
+                   " --size 320x240 --from 0 --to 1");
+  REQUIRE(r.status == 0);
+  CHECK(names_in(dir) == std::set<std::string>{"page"});
+  CHECK(names_in(page / "frames") == std::set<std::string>{"0000.png", "0001.png"});
+}
+
+TEST_CASE("visualizer lesson export: bad input exits 2 with one line and writes nothing", "[visualizer][cli]") {
+  const fs::path dir = sw::testing::scratch("export-bad");
+  const std::string out = sh_quote((dir / "page").string());
+  { std::ofstream(dir / "bad.md") << "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[3,1]}\ncolour: red\n---\n"; }
+  { std::ofstream(dir / "file.txt") << "not a directory\n"; }
+  fs::create_directories(dir / "mine");
+  { std::ofstream(dir / "mine" / "notes.txt") << "a teacher's file\n"; }
+
+  check_refused(sh_quote((dir / "missing.md").string()) + " --html " + out, dir, "missing.md");
+  check_refused(sh_quote((dir / "bad.md").string()) + " --html " + out, dir, "unknown front-matter key 'colour'");
+  check_refused(lesson("02-grid-walk.md") + " --html " + sh_quote((dir / "file.txt" / "page").string()), dir, "does not exist");
+  check_refused(lesson("02-grid-walk.md") + " --html " + sh_quote((dir / "nowhere" / "page").string()), dir, "does not exist");
+  check_refused(lesson("02-grid-walk.md") + " --html " + sh_quote((dir / "file.txt").string()), dir, "is not a directory");
+  check_refused(lesson("02-grid-walk.md") + " --html " + sh_quote((dir / "mine").string()), dir, "refusing to replace it");
+  CHECK(names_in(dir / "mine") == std::set<std::string>{"notes.txt"});
+  check_refused(lesson("02-grid-walk.md") + " --html " + out + " --size 10x10", dir, "--size");
+  check_refused(lesson("02-grid-walk.md") + " --html " + out + " --from 5 --to 3", dir, "--from 5 is after --to 3");
+  check_refused(lesson("02-grid-walk.md") + " --html " + out + " --to 100000", dir, "past the last step");
+  // The float-drift lesson walks 3000 columns: more steps than a page holds.
+  check_refused(lesson("04-float-drift.md") + " --html " + out + " --size 320x240", dir,
+                "steps; a page holds at most 600 frames (choose a range with --from and --to)");
+  check_refused(lesson("04-float-drift.md") + " --html " + out + " --size 320x240 --from 0 --to 600", dir,
+                "steps 0..600 are 601 frames; a page holds at most 600 frames");
+}
+
+TEST_CASE("visualizer lesson export: lesson text cannot inject markup or script", "[visualizer]") {
+  const std::string html =
+      sw::vis::markdown_html("Hi <script>alert(1)</script> [x](javascript:alert(1)) [y](https://a.b/c) [z](#top)\n");
+  CHECK(html.find("<script") == std::string::npos);
+  CHECK(html.find("&lt;script&gt;") != std::string::npos);
+  CHECK(html.find("javascript:") == std::string::npos);
+  CHECK(html.find("href=\"#\"") != std::string::npos);
+  CHECK(html.find("href=\"https://a.b/c\"") != std::string::npos);
+  CHECK(html.find("href=\"#top\"") != std::string::npos);
+  CHECK(sw::vis::html_escape("<b a=\"1\">&'") == "&lt;b a=&quot;1&quot;&gt;&amp;&#39;");
+  const std::string blob = sw::vis::script_safe_json(sw::Json{{"n", "</script><b>&"}});
+  CHECK(blob.find('<') == std::string::npos);
+  CHECK(sw::Json::parse(blob).at("n") == "</script><b>&");
+}
+
+#endif
