@@ -178,7 +178,8 @@ def check_page(d, stepwise, lesson, work, page_dir, size):
         fail("no step of %s is on a line the lesson narrates" % lesson)
     s = narrated[-1]
     section = text.split("## on line %s\n" % names[s["line"] - 1], 1)[1].split("\n## ", 1)[0]
-    first_words = " ".join(section.split()[:3]).replace("`", "").replace("**", "")
+    # The words before the first {template}: the rest is filled with the step's values.
+    first_words = " ".join(section.split("{", 1)[0].split()[:3]).replace("`", "").replace("**", "")
     d.js("document.getElementById('slider').value = arguments[0];"
          "document.getElementById('slider').dispatchEvent(new Event('input'));", s["step"] - first)
     shown_text = d.js("return document.getElementById('narration').textContent;")
