@@ -175,6 +175,32 @@ TEST_CASE("visualizer classroom: stepping off-screen pans the canvas to the step
   CHECK(app.canvas(0)->cell_rect(end));
 }
 
+TEST_CASE("visualizer classroom: stepping to a hit off the 3D canvas looks at it at the same distance",
+          "[visualizer][classroom][rays]") {
+  HeadlessHost host(1024, 640);
+  App& app = host.app();
+  REQUIRE(app.open_algorithm(find_algorithm("ray-sphere-geometric"),
+                             parse_json_text(find_algorithm("ray-sphere-geometric").example, "example"), Numeric::f64));
+  REQUIRE(app.set_view(View::orbit3d));
+  const TraceModel& m = *app.model(0);
+  std::optional<std::pair<std::size_t, V3>> hit;  // the first step that records a point
+  for (std::size_t s = 0; s < m.size() && !hit; ++s)
+    for (std::uint32_t g = m.trace().at(s).geo_begin; g < m.trace().at(s).geo_end && !hit; ++g)
+      if (m.trace().geo_at(g).kind == GeoKind::point3 && s > 0) hit = {s, item_of(m.trace(), g).at(0)};
+  REQUIRE(hit);
+  app.set_step(0);
+  host.render(2);
+  const auto* c = dynamic_cast<const OrbitCanvas*>(app.canvas(0));
+  REQUIRE(c);
+  for (int k = 0; k < 40 && c->screen_of(hit->second); ++k) host.press(ImGuiKey_PageUp), host.render(1);  // zoom in
+  REQUIRE_FALSE(c->screen_of(hit->second));
+  const double dist = c->camera().dist;
+  app.set_step(hit->first);
+  host.render(2);
+  CHECK(c->screen_of(hit->second));
+  CHECK(c->camera().dist == dist);
+}
+
 TEST_CASE("visualizer classroom: the 3D view's labels never overlap", "[visualizer][classroom][rays]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();

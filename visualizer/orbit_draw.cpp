@@ -233,7 +233,7 @@ std::vector<std::array<float, 4>> draw_scene3(ImDrawList* dl, const OrbitCamera&
     placed.push_back(ImVec4(at.x - 3, at.y - 1, at.x + ts.x + 3, at.y + ts.y + 1));
   }
   const std::size_t reserved = placed.size() + 2;
-  placed.push_back(ImVec4(x0 + 8, y1 - 92, x0 + 72, y1 - 28));                                  // the axes
+  placed.push_back(ImVec4(x0 + 8, y1 - fs - 76, x0 + 72, y1 - fs - 12));                        // the axes
   placed.push_back(ImVec4(x0, y1 - fs - 8, float(cam.origin[0] + cam.size[0]), y1));           // the help line
   // Layers: surfaces, rays, segments, then the handles (so that they can be grabbed over the
   // scene), then points, so that the step's markers (a hit at o + d) stay visible.
@@ -274,7 +274,7 @@ std::vector<std::array<float, 4>> draw_scene3(ImDrawList* dl, const OrbitCamera&
     dl->AddText(ImVec2(r.x + 3, r.y + 1), info[k] == "miss" ? theme::kNegative : theme::kLabel, info[k].c_str());
   }
   // Orientation: x, y, z axes in the bottom-left corner.
-  const ImVec2 base(float(cam.origin[0] + 40), float(cam.origin[1] + cam.size[1] - 60));
+  const ImVec2 base(x0 + 40, y1 - fs - 44);  // above the help line
   const V3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (int k = 0; k < 3; ++k) {
     const ImVec2 tip(base.x + float(glm::dot(axes[k], cam.right())) * 24, base.y - float(glm::dot(axes[k], cam.up())) * 24);
