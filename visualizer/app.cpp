@@ -10,7 +10,7 @@
 namespace sw::vis {
 
 App::App(TextureHost& textures, theme::Fonts fonts, std::filesystem::path lessons_dir)
-    : textures_(&textures), fonts_(fonts), lessons_dir_(std::move(lessons_dir)) {
+    : textures_(&textures), base_fonts_(fonts), fonts_(fonts), lessons_dir_(std::move(lessons_dir)) {
   try {
     lessons_ = lesson_manifest(lessons_dir_);
   } catch (const InputError& e) {
@@ -243,7 +243,11 @@ void App::handle_keys() {
   if (io.WantTextInput || !a_) return;
   auto pressed = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k)); };
   if (pressed(ImGuiKey_Space)) playing_ = !playing_, carry_ = 0;
-  if (!io.KeyShift) {  // Shift + arrows pan the canvas
+  if (pressed(ImGuiKey_Escape)) presenting_ = false;
+  if (io.KeyCtrl) {  // Ctrl + Left/Right: the previous or next lesson
+    if (pressed(ImGuiKey_LeftArrow)) open_adjacent_lesson(-1);
+    if (pressed(ImGuiKey_RightArrow)) open_adjacent_lesson(+1);
+  } else if (!io.KeyShift) {  // Shift + arrows pan the canvas
     if (pressed(ImGuiKey_LeftArrow) && step_ > 0) set_step(step_ - 1), playing_ = false;
     if (pressed(ImGuiKey_RightArrow)) set_step(step_ + 1), playing_ = false;
   }
@@ -252,6 +256,7 @@ void App::handle_keys() {
   for (ImWchar ch : io.InputQueueCharacters) {
     if (ch == '+' || ch == '=') speed_ = std::min<int>(speed_ + 1, int(kSpeeds.size()) - 1);
     if (ch == '-' || ch == '_') speed_ = std::max(speed_ - 1, 0);
+    if (ch == 'p' || ch == 'P') presenting_ = !presenting_;
     if ((ch == 'v' || ch == 'V') && alg_ && alg_->views.size() > 1) {  // the next declared view
       const auto it = std::find(alg_->views.begin(), alg_->views.end(), view_);
       set_view(it == alg_->views.end() || it + 1 == alg_->views.end() ? alg_->views.front() : *(it + 1));
@@ -262,7 +267,8 @@ void App::handle_keys() {
 
 void App::advance_playback(float dt) {
   if (!playing_ || !a_) return;
-  carry_ += double(dt) * kSpeeds[speed_];
+  // The window host sleeps while idle: the first frame after a wake-up may report a long dt.
+  carry_ += double(std::min(dt, 0.1f)) * kSpeeds[speed_];
   const double whole = std::floor(carry_);
   carry_ -= whole;
   set_step(step_ + static_cast<std::size_t>(whole));
@@ -274,21 +280,19 @@ void App::advance_playback(float dt) {
 void App::frame(float dt) {
   handle_keys();
   advance_playback(dt);
-  const ImVec2 d = ImGui::GetIO().DisplaySize;
-  // Toolbar on top, timeline at the bottom; canvas with the narration under it on the left; the
-  // listing (as tall as its text, measured last frame) and the state on the right.
-  const float top = has_sliders() ? 106 : 76, bottom = 96;
-  const float right = std::clamp(d.x * 0.37f, 340.f, 560.f), left = d.x - right;
-  const float mid = std::max(d.y - top - bottom, 200.f);
-  const float narration_h = lesson_ ? std::clamp(mid * 0.25f, 110.f, 220.f) : 76.f;
-  const float listing_h = std::min(listing_content_h_, mid * 0.6f);
+  fonts_ = presenting_ ? base_fonts_.big() : base_fonts_;
   ImGui::PushFont(fonts_.body);
-  draw_toolbar(ImVec2(0, 0), ImVec2(d.x, top));
-  draw_canvases(ImVec2(0, top), ImVec2(left, mid - narration_h));
-  draw_narration(ImVec2(0, top + mid - narration_h), ImVec2(left, narration_h));
-  draw_listing(ImVec2(left, top), ImVec2(right, listing_h));
-  draw_state(ImVec2(left, top + listing_h), ImVec2(right, mid - listing_h));
-  draw_timeline(ImVec2(0, d.y - bottom), ImVec2(d.x, bottom));
+  // Toolbar on top, timeline at the bottom, each as tall as its rows measured last frame; canvas
+  // with the narration under it on the left; the listing and the state on the right (layout.cpp).
+  LayoutInput in{ImGui::GetIO().DisplaySize, ImGui::GetFontSize(), toolbar_content_h_, timeline_content_h_, listing_content_h_};
+  in.lesson = lesson_.has_value(), in.presenting = presenting_;
+  const PanelLayout& l = layout_ = layout_panels(in);
+  draw_toolbar(l.toolbar.pos, l.toolbar.size);
+  draw_canvases(l.canvas.pos, l.canvas.size);
+  draw_narration(l.narration.pos, l.narration.size);
+  draw_listing(l.listing.pos, l.listing.size);
+  if (!presenting_) draw_state(l.state.pos, l.state.size);
+  draw_timeline(l.timeline.pos, l.timeline.size);
   ImGui::PopFont();
 }
 
@@ -320,7 +324,9 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
       if (i) ImGui::SameLine(0, 4);
       ImGui::PushID(i);
       if (i) canvases_[1]->follow(*canvases_[0]);
-      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, playing_ && i == 0, n > 1 ? (i ? label_b : label_a).c_str() : "", quiz_.on};
+      // Keep the step in view while playing and after each step taken, never against a pan.
+      const bool follow = i == 0 && (playing_ || step_ != followed_step_);
+      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, follow, n > 1 ? (i ? label_b : label_a).c_str() : "", quiz_.on};
       const CanvasEvents ev = canvases_[i]->draw(in, ImVec2(w, avail.y));
       const Question* q = quiz_pending();
       if (ev.clicked_cell && q && q->type == QuizType::pixel) answer(Json::array({ev.clicked_cell->x, ev.clicked_cell->y}));
@@ -330,6 +336,7 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
       ImGui::PopID();
     }
     if (b_) canvases_[0]->follow(*canvases_[1]);  // a pan on the right canvas moves both
+    followed_step_ = step_;
   } else if (error_.empty()) {
     ImGui::TextDisabled("Open a lesson or choose an algorithm above.");
   }

@@ -13,6 +13,7 @@
 #include <vector>
 #include "canvas.hpp"
 #include "compare.hpp"
+#include "layout.hpp"
 #include "lesson.hpp"
 #include "quiz.hpp"
 #include "theme.hpp"
@@ -49,6 +50,19 @@ class App {
   View view() const { return view_; }
   // Goes to a step and centres the canvas on it, zoomed in enough to see single pixels.
   void jump_and_focus(std::size_t step);
+  // Something moves without input (playback): the window host redraws at full rate, else it
+  // waits for events.
+  bool animating() const { return playing_; }
+
+  // Presentation mode (P, or the toolbar's toggle): big fonts, no edit rows, no state panel.
+  void set_presenting(bool on) { presenting_ = on; }
+  bool presenting() const { return presenting_; }
+  // The lessons of the manifest by title (a file that fails to load shows its name and the error),
+  // read once on first use (lesson_menu.cpp).
+  const std::vector<std::string>& lesson_titles();
+  // Opens the lesson `delta` places after the current one in manifest order (the first with none
+  // open); false at either end or if it fails to load (error() says why).
+  bool open_adjacent_lesson(int delta);
 
   // Quiz mode (a lesson only): the run switches to the quiz's exact number type, stepping forward
   // stops at each question until it is answered, and the future is hidden (docs/lessons.md).
@@ -69,6 +83,8 @@ class App {
   const Canvas* canvas(int i) const { return canvases_[i].get(); }
   const TraceModel* model(int i) const { return (i == 0 ? a_ : b_).get(); }
   const std::optional<CompareStats>& compare_stats() const { return stats_; }
+  // Test hook: the panels' places in the last frame.
+  const PanelLayout& layout() const { return layout_; }
 
  private:
   // Records the run(s); on failure returns the message and leaves the open run as it was.
@@ -87,6 +103,7 @@ class App {
   void advance_playback(float dt);
 
   void draw_toolbar(ImVec2 pos, ImVec2 size);
+  void draw_menu_bar();      // lesson_menu.cpp
   bool has_sliders() const;  // the toolbar has a third row
   void draw_canvases(ImVec2 pos, ImVec2 size);
   void draw_compare_strip();
@@ -98,10 +115,16 @@ class App {
   void draw_markdown(const std::string& text);
 
   TextureHost* textures_;
-  theme::Fonts fonts_;
+  theme::Fonts base_fonts_, fonts_;  // fonts_: this frame's, the big ones when presenting
   std::filesystem::path lessons_dir_;
   std::vector<std::filesystem::path> lessons_;
   std::string lessons_error_;
+  std::vector<std::string> lesson_titles_;  // by lesson_titles(), once
+  std::optional<std::size_t> lesson_pos_;   // the manifest entry last opened (or tried)
+  bool presenting_ = false;
+  PanelLayout layout_;
+  float toolbar_content_h_ = 0, timeline_content_h_ = 0;  // measured each frame, for the next
+  std::size_t followed_step_ = ~std::size_t(0);           // the step the canvas last kept in view
 
   // What is open.
   std::optional<Lesson> lesson_;

@@ -1,6 +1,6 @@
 // stepwise-gui: the window host (GLFW + ImGui's GL3 backend).
 //   stepwise-gui [--lesson FILE | --algorithm ALG --input JSON] [--numeric M] [--compare M2]
-//                [--step N] [--size WxH] [--frames N --screenshot FILE]
+//                [--step N] [--size WxH] [--scale S] [--present] [--frames N --screenshot FILE]
 // With no arguments it opens the first lesson of lessons/manifest.txt. --frames N renders N frames
 // and exits (0 if the lesson or algorithm loaded, 2 if not: the app then shows why).
 // Hidden: --bench-scrub K renders K frames of a 10^6-step trace, jumping to random steps.
@@ -29,6 +29,8 @@ struct Options {
   std::string lesson, algorithm, input, numeric, compare, screenshot, size = "1280x800";
   std::optional<std::size_t> step;
   int frames = 0, bench_scrub = 0;
+  double scale = 1;
+  bool present = false;
   Budget budget;
 };
 
@@ -75,6 +77,8 @@ int main(int argc, char** argv) {
   cli.add_option("--step", o.step, "Start at this step");
   cli.add_option("--max-steps", o.budget.max_steps, "Refuse inputs that imply more steps (default 4000000)");
   cli.add_option("--size", o.size, "Window size WxH");
+  cli.add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (a projector: 1.5 to 2)");
+  cli.add_flag("--present", o.present, "Start in presentation mode (P toggles it)");
   cli.add_option("--frames", o.frames, "Render this many frames, then exit")->check(CLI::Range(1, 100000));
   cli.add_option("--screenshot", o.screenshot, "With --frames: write the last frame to this PNG");
   cli.add_option("--bench-scrub", o.bench_scrub, "")->group("");  // hidden benchmark
@@ -89,6 +93,12 @@ int main(int argc, char** argv) {
   int w = 1280, h = 800;
   if (std::sscanf(o.size.c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240) {
     std::cerr << "stepwise-gui: error: --size '" << o.size << "': expected WxH\n";
+    return 2;
+  }
+  try {
+    check_scale(o.scale);
+  } catch (const InputError& e) {
+    std::cerr << "stepwise-gui: error: " << e.what() << '\n';
     return 2;
   }
   if (!glfwInit()) {
@@ -110,7 +120,7 @@ int main(int argc, char** argv) {
   const bool timed = o.frames > 0 || o.bench_scrub > 0;
   glfwSwapInterval(timed ? 0 : 1);
   ImGui::CreateContext();
-  const theme::Fonts fonts = theme::setup_style();
+  const theme::Fonts fonts = theme::setup_style(float(o.scale));
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 150");
   int status = 0;
@@ -118,16 +128,30 @@ int main(int argc, char** argv) {
     GlTextureHost textures;
     App app(textures, fonts);
     app.set_budget(o.budget);
+    app.set_presenting(o.present);
     const bool loaded = open(app, o);
     if (!loaded) std::cerr << "stepwise-gui: could not load: " << app.error() << '\n', status = 2;
     std::mt19937_64 rng(7);
     const int total = o.bench_scrub ? o.bench_scrub + 1 : o.frames;
     Clock::time_point t_bench;
     std::vector<std::uint8_t> shot;
+    // Idle, the loop sleeps until an event: it redraws at full rate only while something moves
+    // (playback, a held mouse button: drags) and for a few frames after each event, in which
+    // ImGui settles (hover, rows measured a frame late). A wake-up every 0.5 s without events
+    // still draws one frame: tooltips and the text caret have timers. docs/visualizer.md.
+    constexpr double kIdleWait = 0.5;
+    int settle = 3;
     for (int frame = 0; !glfwWindowShouldClose(window) && (total == 0 || frame < total); ++frame) {
       if (o.bench_scrub && frame == 1) t_bench = Clock::now();
       if (o.bench_scrub && app.steps()) app.set_step(rng() % app.steps());
-      glfwPollEvents();
+      if (timed || app.animating() || ImGui::IsAnyMouseDown() || settle > 0) {
+        glfwPollEvents();
+        --settle;
+      } else {
+        const auto t0 = Clock::now();
+        glfwWaitEventsTimeout(kIdleWait);
+        if (Clock::now() - t0 < std::chrono::duration<double>(0.9 * kIdleWait)) settle = 3;  // woken by an event
+      }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       if (timed) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // scripted frames: no hover

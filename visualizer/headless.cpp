@@ -64,7 +64,7 @@ struct HeadlessHost::Impl {
   bool backend = false;
 };
 
-HeadlessHost::HeadlessHost(int width, int height, std::filesystem::path lessons_dir)
+HeadlessHost::HeadlessHost(int width, int height, std::filesystem::path lessons_dir, float scale)
     : impl_(std::make_unique<Impl>()), w_(width), h_(height), pixels_(std::size_t(width) * height * 4) {
   impl_->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
   if (!impl_->ctx) throw std::runtime_error("OSMesa could not create a context");
@@ -73,7 +73,7 @@ HeadlessHost::HeadlessHost(int width, int height, std::filesystem::path lessons_
   OSMesaPixelStore(OSMESA_Y_UP, 0);  // row 0 of the buffer is the top of the picture
   impl_->imgui = ImGui::CreateContext();
   ImGui::SetCurrentContext(impl_->imgui);
-  const theme::Fonts fonts = theme::setup_style();
+  const theme::Fonts fonts = theme::setup_style(scale);
   ImGui::GetIO().DisplaySize = ImVec2(float(width), float(height));
   for (int k = 0; k < ImGuiKey_COUNT; ++k) ImGui::GetIO().KeyMap[k] = k;  // scripted keys index KeysDown directly
   if (!ImGui_ImplOpenGL2_Init()) throw std::runtime_error("ImGui's OpenGL2 backend failed to start");

@@ -10,8 +10,9 @@ namespace sw::vis {
 
 class HeadlessHost {
  public:
-  // Throws std::runtime_error if OSMesa cannot make a context.
-  HeadlessHost(int width, int height, std::filesystem::path lessons_dir = default_lessons_dir());
+  // Throws std::runtime_error if OSMesa cannot make a context. `scale` is the UI scale
+  // (theme::setup_style; in [theme::kMinScale, theme::kMaxScale]).
+  HeadlessHost(int width, int height, std::filesystem::path lessons_dir = default_lessons_dir(), float scale = 1.f);
   ~HeadlessHost();
   HeadlessHost(const HeadlessHost&) = delete;
   HeadlessHost& operator=(const HeadlessHost&) = delete;

@@ -178,6 +178,19 @@ void OrbitCanvas::focus(const TraceModel& m, std::size_t step, double) {
   fit_pending_ = false;
 }
 
+void OrbitCanvas::keep_in_view(const TraceModel& m, std::size_t step) {
+  // The step's own points (a hit, a closest approach): if one is off the canvas or behind the
+  // eye, look at it from where the camera is (same distance: the zoom stays).
+  const TraceView& t = m.trace();
+  const StepRecord& st = t.at(std::min(step, m.last()));
+  for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g)
+    if (t.geo_at(g).kind == GeoKind::point3) {
+      const V3 p = item_of(t, g).at(0);
+      if (!screen_of(p)) cam_.target = p;
+      return;
+    }
+}
+
 void OrbitCanvas::handle_input(const CanvasInput& in, const std::vector<std::optional<V3>>& handles, bool hovered, CanvasEvents& ev) {
   const ImGuiIO& io = ImGui::GetIO();
   if (hovered && io.MouseWheel != 0) cam_.zoom(std::pow(1.2, -io.MouseWheel));
@@ -232,12 +245,13 @@ CanvasEvents OrbitCanvas::draw(const CanvasInput& in, ImVec2 size) {
       fit_pending_ = false;
     }
     handle_input(in, handles, hovered, ev);
-    draw_scene3(dl, cam_, sc, *in.model, in.step, handles, in.editable ? dragging_ : -1);
+    if (in.follow && dragging_ == -1) keep_in_view(*in.model, in.step);
+    labels_ = draw_scene3(dl, cam_, sc, *in.model, in.step, handles, in.editable ? dragging_ : -1);
     for (const auto& h : handles) can_edit = can_edit || (in.editable && h);
   }
   const char* help = "drag: orbit   right/shift-drag: pan   wheel: zoom   F: fit   drag a handle: edit the input";
   if (!can_edit || ImGui::CalcTextSize(help).x > size.x - 16) help = "drag: orbit   right-drag: pan   wheel: zoom   F: fit";
-  dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetFontSize() - 6), theme::kLabel, help);
+  if (ImGui::CalcTextSize(help).x <= size.x - 16) dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetFontSize() - 6), theme::kLabel, help);
   corner_label(dl, origin, size, in.label);
   dl->PopClipRect();
   return ev;

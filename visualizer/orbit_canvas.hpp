@@ -50,20 +50,25 @@ class OrbitCanvas final : public Canvas {
   // camera and inside the canvas.
   std::optional<std::array<float, 2>> screen_of(V3 p) const;
   const OrbitCamera& camera() const { return cam_; }
+  // Test hook: the label boxes of the last drawn frame (draw_scene3).
+  const std::vector<std::array<float, 4>>& label_rects() const { return labels_; }
 
  private:
   void handle_input(const CanvasInput& in, const std::vector<std::optional<V3>>& handles, bool hovered, CanvasEvents& ev);
   void face(const Scene3& sc);
+  void keep_in_view(const TraceModel& m, std::size_t step);  // pans to the step's point if off-canvas
 
   OrbitCamera cam_;
+  std::vector<std::array<float, 4>> labels_;
   bool fit_pending_ = true, orient_pending_ = true;  // F re-frames; a new trace also turns to face its ray
   int dragging_ = -1;        // a handle's index, or kOrbit, kPan
   V3 drag_anchor_{0, 0, 0};  // the handle's world position when the drag began (its facing plane)
   static constexpr int kOrbit = -2, kPan = -3;
 };
 
-// The drawing of one frame (orbit_draw.cpp).
-void draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const TraceModel& m, std::size_t step,
+// The drawing of one frame (orbit_draw.cpp). Returns the label boxes it drew (x0, y0, x1, y1),
+// pairwise disjoint: labels that found no clear place near their item were dropped.
+std::vector<std::array<float, 4>> draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const TraceModel& m, std::size_t step,
                  const std::vector<std::optional<V3>>& handles, int active_handle);
 
 // The colour of a point recorded on a hit step (tests look for it).

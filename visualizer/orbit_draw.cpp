@@ -3,6 +3,7 @@
 // [SECTION] draw_scene3
 // Every item is painted by its kind; its label is drawn beside it, its value prints after the
 // label and its sign picks the colour (an edge function's side). Nothing here reads variables.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -32,7 +33,7 @@ ImU32 label_colour(const char* label, ImU32 fallback) {
 struct Painter {
   ImDrawList* dl;
   const OrbitCamera& cam;
-  std::vector<ImVec4>* placed;  // label rectangles so far: a new label moves down until it is clear
+  std::vector<ImVec4>* placed;  // label rectangles so far (x0, y0, x1, y1), pairwise disjoint
 
   void line(V3 a, V3 b, ImU32 col, float thick = 1.5f, float offset_px = 0) const {
     auto s = cam.project_segment(a, b);
@@ -51,24 +52,40 @@ struct Painter {
     dl->AddCircleFilled(v2(*s), r, col, 16);
     return v2(*s);
   }
-  // Text on a dark backing so that it reads over lines and fills.
-  void text(ImVec2 at, ImU32 col, const char* s, bool avoid = true) const {
+  // Text on a dark backing so that it reads over lines and fills. Greedy placement: the first of a
+  // few boxes near `at` (as asked, then a row lower or higher, then mirrored to the anchor's left)
+  // that lies inside the canvas and clear of every label placed so far; none: the label is
+  // dropped. A box moved off `at` gets a leader line from `anchor`. Returns whether it was drawn.
+  bool text(ImVec2 at, ImU32 col, const char* s, std::optional<ImVec2> anchor = std::nullopt) const {
     const ImVec2 ts = ImGui::CalcTextSize(s);
-    at.x = std::min(at.x, float(cam.origin[0] + cam.size[0]) - ts.x - 6);  // keep it inside the canvas
-    for (int tries = 0; avoid && tries < 6; ++tries) {
-      bool clear = true;
-      for (const ImVec4& r : *placed) clear = clear && (at.x + ts.x + 3 < r.x || at.x - 3 > r.z || at.y + ts.y + 1 < r.y || at.y - 1 > r.w);
-      if (clear) break;
-      at.y += ts.y + 3;
-    }
-    placed->push_back(ImVec4(at.x - 3, at.y - 1, at.x + ts.x + 3, at.y + ts.y + 1));
-    dl->AddRectFilled(ImVec2(at.x - 3, at.y - 1), ImVec2(at.x + ts.x + 3, at.y + ts.y + 1), IM_COL32(16, 18, 24, 170), 3);
-    dl->AddText(at, col, s);
+    const float x_min = float(cam.origin[0]) + 3, y_min = float(cam.origin[1]) + 1;
+    const float x_max = float(cam.origin[0] + cam.size[0]) - 3, y_max = float(cam.origin[1] + cam.size[1]) - 1;
+    constexpr float kRows[] = {0, 1, -1, 2, -2, 3, -3};
+    for (int side = 0; side < 2; ++side)
+      for (float row : kRows) {
+        ImVec2 q(at.x, at.y + row * (ts.y + 4));
+        if (side) q.x = (anchor ? 2 * anchor->x - at.x : at.x) - ts.x;  // mirrored about the anchor
+        q.x = std::clamp(q.x, x_min, x_max - ts.x);
+        const ImVec4 box(q.x - 3, q.y - 1, q.x + ts.x + 3, q.y + ts.y + 1);
+        if (box.x < x_min - 3 || box.y < y_min || box.w > y_max) continue;  // wider or out of the canvas
+        bool clear = true;
+        for (const ImVec4& r : *placed) clear = clear && (box.z <= r.x || r.z <= box.x || box.w <= r.y || r.w <= box.y);
+        if (!clear) continue;
+        placed->push_back(box);
+        if (anchor && (row != 0 || side)) {  // a leader from the anchor to the box's nearest point
+          const ImVec2 near(std::clamp(anchor->x, box.x, box.z), std::clamp(anchor->y, box.y, box.w));
+          dl->AddLine(*anchor, near, (col & 0x00FFFFFFu) | 0xA0000000u, 1.f);
+        }
+        dl->AddRectFilled(ImVec2(box.x, box.y), ImVec2(box.z, box.w), IM_COL32(16, 18, 24, 170), 3);
+        dl->AddText(q, col, s);
+        return true;
+      }
+    return false;
   }
   void label(V3 p, ImU32 col, const char* s, float dx = 9, float dy = -20) const {
     const auto sp = cam.project(p);
     if (sp && (*sp)[0] >= cam.origin[0] && (*sp)[0] <= cam.origin[0] + cam.size[0] && (*sp)[1] >= cam.origin[1] && (*sp)[1] <= cam.origin[1] + cam.size[1])
-      text(ImVec2(float((*sp)[0]) + dx, float((*sp)[1]) + dy), col, s);
+      text(ImVec2(float((*sp)[0]) + dx, float((*sp)[1]) + dy), col, s, v2(*sp));
   }
 };
 
@@ -188,8 +205,8 @@ void paint_point(const Painter& p, const Item3& it, bool hit_step) {
 
 // [SECTION] draw_scene3
 
-void draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const TraceModel& m, std::size_t step,
-                 const std::vector<std::optional<V3>>& handles, int active_handle) {
+std::vector<std::array<float, 4>> draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const TraceModel& m, std::size_t step,
+                                              const std::vector<std::optional<V3>>& handles, int active_handle) {
   std::vector<ImVec4> placed;
   const Painter p{dl, cam, &placed};
   const TraceView& t = m.trace();
@@ -200,6 +217,24 @@ void draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const
     items.push_back(item_of(t, g));
     items.back().current = g >= st.geo_begin;
   }
+  // The step's labelled items as text, top left: their boxes are reserved first (drawn last, over
+  // the scene), then the axes and the help line at the bottom; scene labels avoid them all.
+  std::vector<std::string> info;
+  char buf[200];
+  for (const Item3& it : items) {
+    if (!it.current || !it.label) continue;
+    if (it.value) info.push_back(caption(it));
+    else if (it.kind == GeoKind::point3) std::snprintf(buf, sizeof buf, "%s at (%.9g, %.9g, %.9g)", it.label, it.v[0], it.v[1], it.v[2]), info.push_back(buf);
+  }
+  if (st.kind == StepKind::miss) info.push_back("miss");
+  const float fs = ImGui::GetFontSize(), x0 = float(cam.origin[0]), y1 = float(cam.origin[1] + cam.size[1]);
+  for (std::size_t k = 0; k < info.size(); ++k) {
+    const ImVec2 at(x0 + 10, float(cam.origin[1] + 8) + float(k) * (fs + 4)), ts = ImGui::CalcTextSize(info[k].c_str());
+    placed.push_back(ImVec4(at.x - 3, at.y - 1, at.x + ts.x + 3, at.y + ts.y + 1));
+  }
+  const std::size_t reserved = placed.size() + 2;
+  placed.push_back(ImVec4(x0 + 8, y1 - fs - 76, x0 + 72, y1 - fs - 12));                        // the axes
+  placed.push_back(ImVec4(x0, y1 - fs - 8, float(cam.origin[0] + cam.size[0]), y1));           // the help line
   // Layers: surfaces, rays, segments, then the handles (so that they can be grabbed over the
   // scene), then points, so that the step's markers (a hit at o + d) stay visible.
   std::vector<const char*> lanes;
@@ -232,28 +267,24 @@ void draw_scene3(ImDrawList* dl, const OrbitCamera& cam, const Scene3& sc, const
     }
   }
 
-  // The step's labelled items as text, top left.
-  std::vector<std::string> info;
-  char buf[200];
-  for (const Item3& it : items) {
-    if (!it.current || !it.label) continue;
-    if (it.value) info.push_back(caption(it));
-    else if (it.kind == GeoKind::point3) std::snprintf(buf, sizeof buf, "%s at (%.9g, %.9g, %.9g)", it.label, it.v[0], it.v[1], it.v[2]), info.push_back(buf);
-  }
-  if (st.kind == StepKind::miss) info.push_back("miss");
-  float y = float(cam.origin[1] + 8);
-  for (const std::string& s : info) {
-    p.text(ImVec2(float(cam.origin[0] + 10), y), s == "miss" ? theme::kNegative : theme::kLabel, s.c_str(), false);
-    y += ImGui::GetFontSize() + 4;
+  // The step's values, top left, in the boxes reserved for them.
+  for (std::size_t k = 0; k < info.size(); ++k) {
+    const ImVec4& r = placed[k];
+    dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.z, r.w), IM_COL32(16, 18, 24, 170), 3);
+    dl->AddText(ImVec2(r.x + 3, r.y + 1), info[k] == "miss" ? theme::kNegative : theme::kLabel, info[k].c_str());
   }
   // Orientation: x, y, z axes in the bottom-left corner.
-  const ImVec2 base(float(cam.origin[0] + 40), float(cam.origin[1] + cam.size[1] - 60));
+  const ImVec2 base(x0 + 40, y1 - fs - 44);  // above the help line
   const V3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (int k = 0; k < 3; ++k) {
     const ImVec2 tip(base.x + float(glm::dot(axes[k], cam.right())) * 24, base.y - float(glm::dot(axes[k], cam.up())) * 24);
     dl->AddLine(base, tip, kAxis[k], 2.f);
     dl->AddText(ImVec2(tip.x - 3, tip.y - 8), kAxis[k], k == 0 ? "x" : k == 1 ? "y" : "z");
   }
+  std::vector<std::array<float, 4>> labels;  // the info boxes and the scene's labels
+  for (std::size_t k = 0; k < placed.size(); ++k)
+    if (k < info.size() || k >= reserved) labels.push_back({placed[k].x, placed[k].y, placed[k].z, placed[k].w});
+  return labels;
 }
 
 }  // namespace sw::vis

@@ -1,5 +1,6 @@
 // The timeline: step, play, speed, scrub, jump to start/end or to the next step of a kind.
 #include <cinttypes>
+#include <cstdio>
 #include "app.hpp"
 
 namespace sw::vis {
@@ -13,14 +14,17 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
     return;
   }
   const std::size_t last = a_->last();
-  const ImVec2 b(44, 0);
+  // Sizes in font sizes (--scale, presentation mode); groups wrap onto a new row (flow) when the
+  // window is narrow, and the panel is as tall as its rows (measured below, for the next frame).
+  const float em = ImGui::GetFontSize(), gap = 1.6f * em;
+  const ImVec2 b(2.9f * em, 0);
   if (ImGui::Button("|<", b)) set_step(0), playing_ = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Start (Home)");
   ImGui::SameLine();
   if (ImGui::Button("<", b) && step_ > 0) set_step(step_ - 1), playing_ = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Step back (Left)");
   ImGui::SameLine();
-  if (ImGui::Button(playing_ ? "Pause" : "Play", ImVec2(70, 0))) {
+  if (ImGui::Button(playing_ ? "Pause" : "Play", ImVec2(4.7f * em, 0))) {
     if (!playing_ && step_ >= last) set_step(0);
     playing_ = !playing_, carry_ = 0;
   }
@@ -32,19 +36,20 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
   if (ImGui::Button(">|", b)) set_step(last), playing_ = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("End (End)");
 
-  ImGui::SameLine(0, 24);
+  const float pad = ImGui::GetStyle().ItemSpacing.x;
+  flow(ImGui::CalcTextSize("Speed 100000 steps/s").x + 2 * (1.7f * em + pad) + 2 * pad, gap);
   ImGui::TextUnformatted("Speed");
   ImGui::SameLine();
-  if (ImGui::Button("-", ImVec2(26, 0))) speed_ = std::max(speed_ - 1, 0);
+  if (ImGui::Button("-", ImVec2(1.7f * em, 0))) speed_ = std::max(speed_ - 1, 0);
   ImGui::SameLine();
   ImGui::Text("%6g steps/s", kSpeeds[speed_]);
   ImGui::SameLine();
-  if (ImGui::Button("+", ImVec2(26, 0))) speed_ = std::min<int>(speed_ + 1, int(kSpeeds.size()) - 1);
+  if (ImGui::Button("+", ImVec2(1.7f * em, 0))) speed_ = std::min<int>(speed_ + 1, int(kSpeeds.size()) - 1);
 
-  ImGui::SameLine(0, 24);
+  flow(ImGui::CalcTextSize("Kind < prev next >").x + 6.4f * em + 6 * pad + 4 * ImGui::GetStyle().FramePadding.x, gap);
   ImGui::TextUnformatted("Kind");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(96);
+  ImGui::SetNextItemWidth(6.4f * em);
   if (ImGui::BeginCombo("##kind", std::string(kind_name(StepKind(seek_kind_))).c_str())) {
     for (std::size_t k = 0; k < kStepKindNames.size(); ++k)
       if (ImGui::Selectable(std::string(kStepKindNames[k]).c_str(), int(k) == seek_kind_)) seek_kind_ = int(k);
@@ -59,14 +64,24 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
     if (auto s = a_->find_kind(step_, StepKind(seek_kind_), true)) set_step(*s), playing_ = false;
   }
   const StepRecord& st = a_->trace().at(step_);
-  ImGui::SameLine(0, 24);
-  ImGui::Text("step %zu of %zu   line %u   %s", step_, last, st.line, std::string(kind_name(st.kind)).c_str());
 
   // The scrub slider: a 64-bit step index, so 10^6-step traces scrub without overflow.
   ImGui::SetNextItemWidth(-1);
   std::uint64_t s = step_, lo = 0, hi = last;
-  if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &s, &lo, &hi, "step %" PRIu64)) set_step(s), playing_ = false;
-  ImGui::TextDisabled("Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   F fit");
+  char format[160];  // the step, its line and kind on the slider: no row of their own
+  std::snprintf(format, sizeof format, "step %%" PRIu64 " of %zu   line %u   %s", last, st.line, std::string(kind_name(st.kind)).c_str());
+  if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &s, &lo, &hi, format)) set_step(s), playing_ = false;
+  // The keys, for the one at the keyboard, in one row: the longest that fits (none when presenting).
+  const char* keys[] = {"Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "
+                        "F fit   P present   Ctrl+Left/Right lesson",
+                        "Space play   Left/Right step   Home/End   +/- speed   wheel zoom   drag pan   F fit   P present   Ctrl+Left/Right lesson",
+                        "Space play   Left/Right step   F fit   P present"};
+  for (const char* k : keys)
+    if (!presenting_ && ImGui::CalcTextSize(k).x <= ImGui::GetContentRegionAvail().x) {
+      ImGui::TextDisabled("%s", k);
+      break;
+    }
+  timeline_content_h_ = content_height();  // the next frame's layout
   ImGui::End();
 }
 

@@ -1,32 +1,39 @@
 // The toolbar: what is open (lesson, algorithm, number types) and the exact input endpoints.
 #include "app.hpp"  // before imgui_stdlib.h, which needs imgui.h first
 #include <imgui_stdlib.h>
+#include <algorithm>
+#include <cstdio>
 
 namespace sw::vis {
 namespace {
 
 std::string numeric_label(Numeric n) { return std::string(numeric_name(n)); }
 
+// The width of a text label, its gap and an item `item_w` wide after it: what flow() must fit.
+float labelled(const char* label, float item_w) { return ImGui::CalcTextSize(label).x + ImGui::GetStyle().ItemSpacing.x + item_w; }
+
 }  // namespace
 
 void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
   place_next(pos, size);
-  ImGui::Begin("Toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
-  // Row 1: lesson, algorithm, number types.
-  ImGui::TextUnformatted("Lesson");
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(300);
-  const std::string current_lesson = lesson_ ? lesson_->title : std::string("(none)");
-  if (ImGui::BeginCombo("##lesson", current_lesson.c_str())) {
-    if (!lessons_error_.empty()) ImGui::TextColored(theme::kError, "%s", lessons_error_.c_str());
-    for (const auto& path : lessons_)
-      if (ImGui::Selectable(path.filename().string().c_str(), lesson_ && lesson_->path == path)) open_lesson(path);
-    ImGui::EndCombo();
+  ImGui::Begin("Toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_MenuBar);
+  draw_menu_bar();
+  // Widths in font sizes, so that --scale and presentation mode scale them; every row wraps
+  // (flow) where the window is too narrow for it.
+  const float em = ImGui::GetFontSize(), gap = 1.3f * em;
+  // Row 1 (the lesson is chosen in the menu bar): algorithm, number types. Presenting: the
+  // lesson buttons only.
+  if (presenting_) {
+    if (ImGui::Button("< Previous lesson")) open_adjacent_lesson(-1);
+    ImGui::SameLine();
+    if (ImGui::Button("Next lesson >")) open_adjacent_lesson(+1);
+    toolbar_content_h_ = content_height();
+    ImGui::End();
+    return;
   }
-  ImGui::SameLine(0, 20);
   ImGui::TextUnformatted("Algorithm");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(170);
+  ImGui::SetNextItemWidth(11 * em);
   if (ImGui::BeginCombo("##alg", alg_ ? std::string(alg_->id).c_str() : "(choose)")) {
     for (const Algorithm& a : catalog()) {
       if (ImGui::Selectable(std::string(a.id).c_str(), &a == alg_) && &a != alg_) {
@@ -43,16 +50,17 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     ImGui::EndCombo();
   }
   if (alg_) {
-    ImGui::SameLine(0, 20);
+    flow(labelled("Numbers", 6 * em), gap);
     ImGui::TextUnformatted("Numbers");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(90);
+    ImGui::SetNextItemWidth(6 * em);
     if (ImGui::BeginCombo("##num", numeric_label(numeric_).c_str())) {
       for (Numeric n : alg_->numerics)
         if (ImGui::Selectable(numeric_label(n).c_str(), n == numeric_) && n != numeric_) rerun_numerics(n, compare_);
       ImGui::EndCombo();
     }
-    ImGui::SameLine(0, 20);
+    const float cmp_w = compare_ ? (compare_.other ? 12.5f : 6) * em + ImGui::GetStyle().ItemSpacing.x : 0;
+    flow(ImGui::GetFrameHeight() + ImGui::CalcTextSize("Compare with").x + 2 * ImGui::GetStyle().ItemInnerSpacing.x + cmp_w, gap);
     bool on = bool(compare_);
     if (ImGui::Checkbox("Compare with", &on)) {
       Comparison other;
@@ -66,7 +74,7 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
                                                     : "Run the input in a second number type, or in another model, side by side");
     if (compare_) {
       ImGui::SameLine();
-      ImGui::SetNextItemWidth(compare_.other ? 190 : 90);
+      ImGui::SetNextItemWidth(compare_.other ? 12.5f * em : 6 * em);
       if (ImGui::BeginCombo("##cmp", compare_.label().c_str())) {
         for (Numeric n : alg_->numerics)
           if (ImGui::Selectable(numeric_label(n).c_str(), !compare_.other && n == *compare_.numeric) && (compare_.other || n != *compare_.numeric))
@@ -81,29 +89,32 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
         ImGui::EndCombo();
       }
     }
-    ImGui::SameLine(0, 20);
+    flow(ImGui::CalcTextSize("Fit view").x + 2 * ImGui::GetStyle().FramePadding.x, gap);
     if (ImGui::Button("Fit view") && canvases_[0]) canvases_[0]->fit();
   }
-  // Row 2: the input. Segments get four exact fields; anything else a JSON field.
-  if (alg_) {
+  // Row 2: the input. Segments get four exact fields; anything else a JSON field. Presentation
+  // mode hides rows 2 and 3.
+  if (alg_ && !presenting_) {
     bool apply = false;
     if (!handle_text_.empty()) {
       // One exact x and y field per declared 2D handle (p0 and p1, the centre, control points).
       std::size_t k = 0;
       for (const Handle& h : alg_->handles) {
         if (h.kind != Handle::Kind::point2 || k >= handle_text_.size()) continue;
+        const float field_w = (handle_text_.size() > 2 ? 4.7f : 7.3f) * em;
         for (int a = 0; a < 2; ++a) {
-          if (k || a) ImGui::SameLine(0, a ? 8 : 20);
-          ImGui::TextUnformatted(a ? "y" : (h.label + "  x").c_str());
+          const std::string label = a ? "y" : h.label + "  x";
+          if (k || a) flow(labelled(label.c_str(), field_w), a ? 0.5f * em : gap);
+          ImGui::TextUnformatted(label.c_str());
           ImGui::SameLine();
-          ImGui::SetNextItemWidth(handle_text_.size() > 2 ? 70 : 110);
+          ImGui::SetNextItemWidth(field_w);
           const std::string id = "##" + h.pointer + (a ? "y" : "x");
           apply |= ImGui::InputText(id.c_str(), &handle_text_[k][a], ImGuiInputTextFlags_EnterReturnsTrue);
           if (ImGui::IsItemHovered()) ImGui::SetTooltip("An exact value: an integer, a decimal like 2.75, or p/q. Enter applies.");
         }
         ++k;
       }
-      ImGui::SameLine();
+      flow(ImGui::CalcTextSize("Apply").x + 2 * ImGui::GetStyle().FramePadding.x);
       apply |= ImGui::Button("Apply");
       if (apply) {
         Json in = input_;
@@ -115,7 +126,9 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     } else {
       ImGui::TextUnformatted("Input");
       ImGui::SameLine();
-      ImGui::SetNextItemWidth(420);
+      // The JSON field takes what the row has left, between 12 and 28 em.
+      const float apply_w = ImGui::CalcTextSize("Apply").x + 2 * ImGui::GetStyle().FramePadding.x + ImGui::GetStyle().ItemSpacing.x;
+      ImGui::SetNextItemWidth(std::clamp(ImGui::GetContentRegionAvail().x - apply_w, 12 * em, 28 * em));
       apply |= ImGui::InputText("##json", &json_text_, ImGuiInputTextFlags_EnterReturnsTrue);
       ImGui::SameLine();
       apply |= ImGui::Button("Apply");
@@ -127,18 +140,27 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
         }
       }
     }
-    if (!edit_error_.empty()) {
-      ImGui::SameLine(0, 16);
-      ImGui::TextColored(theme::kError, "%s", edit_error_.c_str());
-    } else if (a_) {
-      ImGui::SameLine(0, 16);
-      const bool segment = !handle_text_.empty();
-      if (view_ == View::orbit3d || view_ == View::lobe) ImGui::TextDisabled("%zu steps%s", a_->size(), a_->algorithm().handles.empty() ? "" : "; drag a handle on the canvas to edit the input");
-      else ImGui::TextDisabled("%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment ? "; drag the handles on the canvas" : "");
+    // The error, or the counts and a hint (dropped where the row has no room), after the fields;
+    // wrapped onto a row of their own when they still do not fit.
+    char note[160] = "";
+    if (a_ && edit_error_.empty()) {
+      const float room = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x - ImGui::GetItemRectMax().x - 16;
+      const bool segment = !handle_text_.empty(), counts_only = ImGui::CalcTextSize("0000 steps, 000 pixels; drag a handle on the canvas to edit the input").x > room;
+      const char* hint = counts_only ? "" : "; drag a handle on the canvas to edit the input";
+      if (view_ == View::orbit3d || view_ == View::lobe) std::snprintf(note, sizeof note, "%zu steps%s", a_->size(), a_->algorithm().handles.empty() ? "" : hint);
+      else std::snprintf(note, sizeof note, "%zu steps, %zu pixels%s", a_->size(), a_->plots().size(), segment && !counts_only ? "; drag the handles on the canvas" : "");
+    }
+    const std::string& shown = edit_error_.empty() ? std::string(note) : edit_error_;
+    if (!shown.empty()) {
+      flow(std::min(ImGui::CalcTextSize(shown.c_str()).x, ImGui::GetContentRegionMax().x), 16);
+      ImGui::PushTextWrapPos(0);
+      if (edit_error_.empty()) ImGui::TextDisabled("%s", shown.c_str());
+      else ImGui::TextColored(theme::kError, "%s", shown.c_str());
+      ImGui::PopTextWrapPos();
     }
   }
   // Row 3: sliders for the declared parameters the input has, then the other model's own.
-  if (alg_ && has_sliders()) {
+  if (alg_ && has_sliders() && !presenting_) {
     Json in = input_;
     if (draw_param_sliders(*alg_, in, compare_.other ? alg_->id.data() : "", nullptr)) apply_input(in);
     if (compare_.other) {
@@ -147,6 +169,7 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
       if (draw_param_sliders(*compare_.other, other, compare_.other->id.data(), &input_)) apply_other_input(other);
     }
   }
+  toolbar_content_h_ = content_height();  // the next frame's layout
   ImGui::End();
 }
 
@@ -181,12 +204,14 @@ bool App::draw_param_sliders(const Algorithm& alg, Json& input, const char* pref
   for (const Param& p : alg.params) {
     const auto v = param_value(input, p, skip);
     if (!v) continue;
-    if (!first) ImGui::SameLine(0, 16);
+    const float em = ImGui::GetFontSize(), slider_w = 8.7f * em;
+    const std::string caption = *prefix ? std::string(prefix) + " " + p.label : p.label;
+    if (!first) flow(labelled(caption.c_str(), slider_w), 16);
     first = false;
     if (*prefix) ImGui::TextDisabled("%s", prefix), ImGui::SameLine();
     ImGui::TextUnformatted(p.label.c_str());
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(130);
+    ImGui::SetNextItemWidth(slider_w);
     const std::string id = "##" + std::string(prefix) + p.pointer;
     // The image view sweeps every sample again on a change: there the value applies on release,
     // and the slider shows the value being dragged meanwhile.

@@ -36,6 +36,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_option("--to", o.to, "Last step of the GIF, inclusive (default: the last step)")->needs(gif);
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
   r->add_option("--size", o.size, "Frame size WxH (default 1280x800)");
+  r->add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (default 1)");
+  r->add_flag("--present", o.present, "Presentation mode: big fonts, no edit rows or state panel");
   r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
   r->add_option("--max-steps", o.max_steps, "Refuse inputs that imply more steps (default 4000000)");
   r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree, lobe; default the lesson's, else the first)");
@@ -46,6 +48,7 @@ int run_render(const RenderOptions& o) {
   if (o.lesson.empty() == o.algorithm.empty()) throw InputError("render: give --lesson FILE or --algorithm ALG --input JSON");
   if (o.out.empty() == o.gif.empty()) throw InputError("render: give --out frame.png or --gif anim.gif");
   const auto [w, h] = parse_frame_size(o.size);
+  check_scale(o.scale);
   // Check everything that can be checked before starting GL.
   std::optional<Lesson> lesson;
   const Algorithm* alg = nullptr;
@@ -74,9 +77,10 @@ int run_render(const RenderOptions& o) {
 
   Budget budget;
   budget.max_steps = o.max_steps;
-  HeadlessHost host(w, h);
+  HeadlessHost host(w, h, default_lessons_dir(), float(o.scale));
   App& app = host.app();
   app.set_budget(budget);
+  app.set_presenting(o.present);
   const bool ok = lesson ? app.open_lesson(o.lesson) : app.open_algorithm(*alg, input, numeric, compare);
   if (!ok) throw InputError(app.error());
   // A lesson with other number types keeps its narration: each run narrates its own steps.

@@ -1,6 +1,6 @@
 // `stepwise render`: frames of the visualizer without a window, through the OSMesa host.
 //   stepwise render (--lesson FILE | --algorithm ALG --input JSON) [--numeric M] [--compare M2]
-//                   [--step N] [--view V] [--focus] --out frame.png [--size WxH]
+//                   [--step N] [--view V] [--focus] --out frame.png [--size WxH] [--scale S] [--present]
 //   stepwise render ... --gif out.gif [--from N --to M] [--delay ms]
 #pragma once
 #include <CLI/CLI.hpp>
@@ -14,7 +14,8 @@ struct RenderOptions {
   std::string lesson, algorithm, input, numeric, compare, out, gif, size = "1280x800", view;
   std::optional<std::size_t> step, from, to;
   int delay_ms = 250;
-  bool focus = false;
+  bool focus = false, present = false;
+  double scale = 1;  // the UI scale, theme::kMinScale to theme::kMaxScale
   std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
 };
 

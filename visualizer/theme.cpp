@@ -17,10 +17,18 @@ Fonts setup_style(float scale) {
     f.body = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * scale, &cfg);
     f.mono = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * scale, &cfg);
     f.title = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * scale, &cfg);
+    const float big = scale * kPresentScale;
+    f.body_big = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * big, &cfg);
+    f.mono_big = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * big, &cfg);
+    f.title_big = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * big, &cfg);
   }
-  if (!f.body || !f.mono || !f.title) {
+  if (!f.body || !f.mono || !f.title || !f.body_big || !f.mono_big || !f.title_big) {
     io.Fonts->Clear();
-    f.body = f.mono = f.title = io.Fonts->AddFontDefault();
+    ImFontConfig cfg;
+    cfg.SizePixels = 13.f * scale;  // the built-in bitmap font, scaled (blurry but readable)
+    f.body = f.mono = f.title = io.Fonts->AddFontDefault(&cfg);
+    cfg.SizePixels = 13.f * scale * kPresentScale;
+    f.body_big = f.mono_big = f.title_big = io.Fonts->AddFontDefault(&cfg);
   }
   ImGui::StyleColorsDark();
   ImGuiStyle& s = ImGui::GetStyle();

@@ -31,10 +31,21 @@ struct Fonts {
   ImFont* body = nullptr;
   ImFont* mono = nullptr;
   ImFont* title = nullptr;
+  // The same faces kPresentScale times larger, for presentation mode (the default font if missing).
+  ImFont* body_big = nullptr;
+  ImFont* mono_big = nullptr;
+  ImFont* title_big = nullptr;
+  Fonts big() const { return {body_big, mono_big, title_big, body_big, mono_big, title_big}; }
 };
 
+// Presentation mode's font size over the normal one: a projector's back row reads 15 px as 22.
+inline constexpr float kPresentScale = 1.5f;
+// --scale's accepted range: below 0.75 the 15 px body font is under 12 px; above 3 a 1024-wide
+// window holds too few characters a row.
+inline constexpr float kMinScale = 0.75f, kMaxScale = 3.f;
+
 // Call once after ImGui::CreateContext and before the backend builds its font texture.
-// `scale` multiplies font sizes and spacing (1 at 1280x800).
+// `scale` multiplies font sizes and spacing (1 at 1280x800); it must be in [kMinScale, kMaxScale].
 Fonts setup_style(float scale = 1.f);
 
 // A sweep view's status plate at `at`: three lines on a dark plate, the first red when `bad` (the

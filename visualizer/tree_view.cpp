@@ -210,7 +210,7 @@ CanvasEvents TreeCanvas::draw(const CanvasInput& in, ImVec2 size) {
   char legend[160];
   std::snprintf(legend, sizeof legend, "%zu of %zu nodes built; depth %d%s", marks.built, d.nodes.size(), d.depth,
                 marks.stack.empty() ? "" : "; green: on the stack");
-  dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - 20), theme::kLabel, d.nodes.empty() ? "this trace records no tree nodes" : legend);
+  dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetFontSize() - 5), theme::kLabel, d.nodes.empty() ? "this trace records no tree nodes" : legend);
   corner_label(dl, origin, size, in.label);
   dl->PopClipRect();
   return ev;
