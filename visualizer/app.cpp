@@ -274,6 +274,7 @@ void App::frame(float dt) {
   draw_listing(ImVec2(left, top), ImVec2(right, listing_h));
   draw_state(ImVec2(left, top + listing_h), ImVec2(right, mid - listing_h));
   draw_timeline(ImVec2(0, d.y - bottom), ImVec2(d.x, bottom));
+  accuracy_.draw(alg_, &accuracy_open_);
   ImGui::PopFont();
 }
 
@@ -305,7 +306,8 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
       if (i) ImGui::SameLine(0, 4);
       ImGui::PushID(i);
       if (i) canvases_[1]->follow(*canvases_[0]);
-      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, playing_ && i == 0, n > 1 ? (i ? label_b : label_a).c_str() : ""};
+      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, playing_ && i == 0, n > 1 ? (i ? label_b : label_a).c_str() : "", {}};
+      if (stats_ && !compare_.other) in.marked = stats_->mismatched_cells;
       const CanvasEvents ev = canvases_[i]->draw(in, ImVec2(w, avail.y));
       if (ev.jump_to) set_step(*ev.jump_to), playing_ = false;
       if (ev.drag) on_drag(*ev.drag);

@@ -4,6 +4,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include "texture_host.hpp"
 #include "trace_model.hpp"
@@ -29,6 +30,7 @@ struct CanvasInput {
   bool keys = false;       // this canvas takes the pan/zoom keys
   bool follow = false;     // keep the current step in view (while playing)
   const char* label = "";  // drawn in the corner (e.g. the number type)
+  std::span<const Pixel> marked;  // sorted cells to outline (the compare view's mismatched pixels)
 };
 
 class Canvas {

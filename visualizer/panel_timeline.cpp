@@ -66,6 +66,7 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
   ImGui::SetNextItemWidth(-1);
   std::uint64_t s = step_, lo = 0, hi = last;
   if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &s, &lo, &hi, "step %" PRIu64)) set_step(s), playing_ = false;
+  if (stats_ && !compare_.other) draw_divergence_ticks(ImGui::GetWindowDrawList(), stats_->divergences, last, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   ImGui::TextDisabled("Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   F fit");
   ImGui::End();
 }
