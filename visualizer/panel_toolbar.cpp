@@ -84,8 +84,8 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     ImGui::SameLine(0, 20);
     if (ImGui::Button("Fit view") && canvases_[0]) canvases_[0]->fit();
     ImGui::SameLine();
-    if (ImGui::Button(accuracy_open_ ? "Hide accuracy" : "Accuracy")) accuracy_open_ = !accuracy_open_;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Time every number type on the seeded bench sets and chart speed against wrong outputs");
+    if (ImGui::Button("Accuracy")) accuracy_open_ = !accuracy_open_;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide a chart of every number type's speed against its wrong outputs (a short bench)");
   }
   // Row 2: the input. Segments get four exact fields; anything else a JSON field.
   if (alg_) {
