@@ -96,11 +96,16 @@ void panel(Layout& L, std::string_view alg_id, const std::string& set, const std
   L.line(px0, py0, px0, py1, kAxis, 1.5f, "axis y");
 
   // Markers, then their labels where they do not cover one already placed.
-  std::vector<std::array<float, 4>> placed;
+  std::vector<std::array<float, 4>> placed;  // markers first: no label covers one
+  auto pct_of = [](const BenchRow* r) { return r->cases ? 100.0 * double(r->mismatches) / double(r->cases) : 0.0; };
   for (const BenchRow* r : rows) {
-    const double pct = r->cases ? 100.0 * double(r->mismatches) / double(r->cases) : 0;
-    const float x = sx(r->ns_per_op), y = sy(pct);
+    const float x = sx(r->ns_per_op), y = sy(pct_of(r));
     L.marker(x, y, 6, r->numeric, "marker " + std::string(numeric_name(r->numeric)) + " " + set);
+    placed.push_back({x - 8, y - 8, x + 8, y + 8});
+  }
+  for (const BenchRow* r : rows) {
+    const double pct = pct_of(r);
+    const float x = sx(r->ns_per_op), y = sy(pct);
     std::string label = std::string(numeric_name(r->numeric)) + " " + fmt(pct >= 10 || pct == 0 ? "%.0f%%" : "%.2g%%", pct);
     if (r->max_error > 0) label += ", max err " + fmt("%.3g", r->max_error);
     const float w = chart_text_width(label, 12);
@@ -236,7 +241,7 @@ std::string chart_svg(const Chart& c) {
         // 0.86 of that and its baseline 0.8 below the top.
         const char* anchor = it.anchor < 0 ? "start" : it.anchor == 0 ? "middle" : "end";
         o << "<text x=\"" << it.x0 << "\" y=\"" << it.y0 + 0.8f * it.size << "\" font-size=\"" << 0.86f * it.size << "\" text-anchor=\"" << anchor << "\" "
-          << paint("fill", it.rgba) << cls << '>' << escape(it.text) << "</text>\n";
+          << paint("fill", it.rgba) << " stroke=\"none\"" << cls << '>' << escape(it.text) << "</text>\n";
         break;
       }
     }
