@@ -8,6 +8,7 @@
 #include "catalog.hpp"
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
+#include "bench_plot.hpp"      // visualizer/: `stepwise bench --plot`
 #include "lesson_command.hpp"  // visualizer/: `stepwise lesson export|lint`
 #include "quiz_command.hpp"    // visualizer/: `stepwise quiz`
 #include "render_command.hpp"  // visualizer/: `stepwise render`
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
   int repeats = 3;
   Budget budget;
   std::vector<std::string> bench_numerics;
-  std::string bench_set;
+  std::string bench_set, bench_plot, bench_plot_size = "1280x720";
 
   auto* trace = app.add_subcommand("trace", "Write a JSONL step trace of one run");
   trace->add_option("algorithm", alg_id, "Algorithm id (see `stepwise list`)")->required();
@@ -104,6 +105,8 @@ int main(int argc, char** argv) {
   bench->add_option("--numeric", bench_numerics, "Only these modes (repeatable)");
   bench->add_option("--set", bench_set, "Only this input set (e.g. random, long)");
   bench->add_option("--repeats", repeats, "Timed repeats; the best is reported")->check(CLI::Range(1, 100));
+  bench->add_option("--plot", bench_plot, "Also draw the results as a chart: FILE.png or FILE.svg");
+  bench->add_option("--plot-size", bench_plot_size, "The chart's size WxH (default 1280x720)");
 
 #ifdef SW_HAVE_RENDER
   sw::vis::RenderOptions render_opts;
@@ -182,6 +185,12 @@ int main(int argc, char** argv) {
     }
     if (*bench) {
       const Algorithm& alg = find_algorithm(alg_id);
+#ifdef SW_HAVE_RENDER
+      std::pair<int, int> plot_size;
+      if (!bench_plot.empty()) plot_size = sw::vis::check_plot_target(bench_plot, bench_plot_size);
+#else
+      if (!bench_plot.empty()) throw InputError("--plot needs the visualizer (this build has no OSMesa)");
+#endif
       std::vector<Numeric> modes = alg.numerics;
       if (!bench_numerics.empty()) {
         modes.clear();
@@ -193,6 +202,12 @@ int main(int argc, char** argv) {
       if (rows.empty()) throw InputError("no bench set named '" + bench_set + "'");
       std::stable_sort(rows.begin(), rows.end(), [](const BenchRow& a, const BenchRow& b) { return a.set < b.set; });
       print_bench(alg, rows, json);
+#ifdef SW_HAVE_RENDER
+      if (!bench_plot.empty()) {
+        sw::vis::write_bench_plot(bench_plot, alg.id, rows, plot_size, (repeats == 1 ? std::string("one run") : "best of " + std::to_string(repeats) + " repeats") + " per mode; y: cases whose output differs from exact");
+        std::cerr << "stepwise: wrote chart to " << bench_plot << '\n';
+      }
+#endif
       return 0;
     }
   } catch (const std::exception& e) {  // InputError and anything else: one line, exit 2

@@ -350,6 +350,11 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
   if constexpr (names_hook<Spec>(Hook::canonical)) a.canonical = [](const Json& r) { return Spec::canonical(r); };
   else a.canonical = [](const Json& r) { return r; };
   a.bench = [](Numeric n, int repeats, const std::string& only_set) { return bench_spec<Spec>(n, repeats, only_set); };
+  a.bench_sets = [] {
+    std::vector<std::string> names;
+    for (const auto& set : Spec::bench_sets()) names.push_back(set.name);
+    return names;
+  };
   fill_view_hooks<Spec>(a);
   return a;
 }

@@ -89,6 +89,8 @@ struct Algorithm {
   // Times the untraced algorithm on the family's seeded bench sets (or only_set, if not empty),
   // against the exact mode.
   std::function<std::vector<BenchRow>(Numeric, int repeats, const std::string& only_set)> bench;
+  // The names of those sets, in order (makes the seeded inputs: call it off the UI thread).
+  std::function<std::vector<std::string>()> bench_sets;
 
   bool supports(Numeric n) const;
 };

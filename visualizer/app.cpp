@@ -293,6 +293,7 @@ void App::frame(float dt) {
   draw_listing(l.listing.pos, l.listing.size);
   if (!presenting_) draw_state(l.state.pos, l.state.size);
   draw_timeline(l.timeline.pos, l.timeline.size);
+  accuracy_.draw(alg_, &accuracy_open_);
   ImGui::PopFont();
 }
 
@@ -326,7 +327,8 @@ void App::draw_canvases(ImVec2 pos, ImVec2 size) {
       if (i) canvases_[1]->follow(*canvases_[0]);
       // Keep the step in view while playing and after each step taken, never against a pan.
       const bool follow = i == 0 && (playing_ || step_ != followed_step_);
-      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, follow, n > 1 ? (i ? label_b : label_a).c_str() : "", quiz_.on};
+      CanvasInput in{i ? b_ : a_, std::min(step_, (i ? b_ : a_)->last()), true, i == 0, follow, n > 1 ? (i ? label_b : label_a).c_str() : "", quiz_.on, {}};
+      if (stats_ && !compare_.other) in.marked = stats_->mismatched_cells;
       const CanvasEvents ev = canvases_[i]->draw(in, ImVec2(w, avail.y));
       const Question* q = quiz_pending();
       if (ev.clicked_cell && q && q->type == QuizType::pixel) answer(Json::array({ev.clicked_cell->x, ev.clicked_cell->y}));

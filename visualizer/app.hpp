@@ -11,8 +11,10 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "accuracy_panel.hpp"
 #include "canvas.hpp"
 #include "compare.hpp"
+#include "compare_plot.hpp"
 #include "layout.hpp"
 #include "lesson.hpp"
 #include "quiz.hpp"
@@ -85,6 +87,10 @@ class App {
   const std::optional<CompareStats>& compare_stats() const { return stats_; }
   // Test hook: the panels' places in the last frame.
   const PanelLayout& layout() const { return layout_; }
+  // The Accuracy window (a short bench of the open algorithm, then its chart): shown or not.
+  void set_accuracy_open(bool open) { accuracy_open_ = open; }
+  const AccuracyWindow& accuracy() const { return accuracy_; }
+  const DiffPlot& diff_plot() const { return diff_plot_; }
 
  private:
   // Records the run(s); on failure returns the message and leaves the open run as it was.
@@ -175,6 +181,9 @@ class App {
   std::vector<std::array<float, 3>> listing_rows_;
   std::size_t listing_scrolled_to_ = ~std::size_t(0);
   float listing_content_h_ = 300;  // the listing's full height, measured each frame
+  DiffPlot diff_plot_;              // the compare view's |difference| plot (state panel)
+  bool accuracy_open_ = false;
+  AccuracyWindow accuracy_;         // last: its destructor joins the bench threads first
 };
 
 // Playback speeds in steps per second, chosen with +/-.

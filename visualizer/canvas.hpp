@@ -4,6 +4,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include "texture_host.hpp"
 #include "trace_model.hpp"
@@ -31,6 +32,7 @@ struct CanvasInput {
   bool follow = false;     // keep the current step in view (while playing)
   const char* label = "";  // drawn in the corner (e.g. the number type)
   bool hide_future = false;  // quiz mode: say nothing of later steps (tooltips, jumps)
+  std::span<const Pixel> marked;  // sorted cells to outline (the compare view's mismatched pixels)
 };
 
 class Canvas {

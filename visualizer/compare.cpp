@@ -1,5 +1,6 @@
 #include "compare.hpp"
 #include <algorithm>
+#include <iterator>
 
 namespace sw::vis {
 
@@ -76,8 +77,8 @@ CompareStats compare_traces(const TraceModel& a, const TraceModel& b) {
     const bool decisions = same_decisions(a.trace(), b.trace(), s);
     if (!st.first_value_divergence && (!decisions || !same_values(a.trace(), b.trace(), s))) st.first_value_divergence = s;
     if (!decisions) {
-      st.first_decision_divergence = s;
-      break;
+      if (!st.first_decision_divergence) st.first_decision_divergence = s;
+      if (st.divergences.size() < CompareStats::kMaxListed) st.divergences.push_back(std::uint32_t(s));
     }
   }
   if (!st.first_decision_divergence && a.size() != b.size()) st.first_decision_divergence = common;
@@ -90,13 +91,17 @@ CompareStats compare_traces(const TraceModel& a, const TraceModel& b) {
     std::sort(c.begin(), c.end());
     return c;
   };
-  const auto ca = cells(a), cb = cells(b);
+  auto ca = cells(a), cb = cells(b);
   std::size_t i = 0, j = 0;
   while (i < ca.size() || j < cb.size()) {
     if (j == cb.size() || (i < ca.size() && ca[i] < cb[j])) ++st.pixel_mismatches, ++i;
     else if (i == ca.size() || cb[j] < ca[i]) ++st.pixel_mismatches, ++j;
     else ++i, ++j;
   }
+  // The cells themselves: plotted by one run and never by the other.
+  std::vector<Pixel> ua(ca.begin(), std::unique(ca.begin(), ca.end())), ub(cb.begin(), std::unique(cb.begin(), cb.end()));
+  std::set_symmetric_difference(ua.begin(), ua.end(), ub.begin(), ub.end(), std::back_inserter(st.mismatched_cells));
+  if (st.mismatched_cells.size() > CompareStats::kMaxListed) st.mismatched_cells.resize(CompareStats::kMaxListed);
   return st;
 }
 

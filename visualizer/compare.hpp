@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string_view>
+#include <vector>
 #include "trace_model.hpp"
 
 namespace sw::vis {
@@ -36,6 +37,13 @@ struct CompareStats {
   std::optional<std::size_t> first_decision_divergence;
   // First step where a number differs too (as doubles), which is usually earlier.
   std::optional<std::size_t> first_value_divergence;
+  // Every step (of those both runs have) whose line, kind, integers or pixels differ, ascending;
+  // the timeline's ticks. At most kMaxListed.
+  std::vector<std::uint32_t> divergences;
+  // The cells plotted by one run and not the other, sorted; both canvases outline them. At most
+  // kMaxListed (pixel_mismatches counts them all).
+  std::vector<Pixel> mismatched_cells;
+  static constexpr std::size_t kMaxListed = 1 << 20;
 };
 
 CompareStats compare_traces(const TraceModel& a, const TraceModel& b);

@@ -104,7 +104,8 @@ const std::vector<std::uint8_t>& HeadlessHost::render(int frames) {
       for (char c : chars_) io.AddInputCharacter(static_cast<unsigned>(c));
     ImGui_ImplOpenGL2_NewFrame();
     ImGui::NewFrame();
-    app_->frame(io.DeltaTime);
+    if (paint_) paint_();
+    else app_->frame(io.DeltaTime);
     ImGui::Render();
     glViewport(0, 0, w_, h_);
     glClearColor(0.1f, 0.1f, 0.12f, 1.f);
@@ -115,6 +116,18 @@ const std::vector<std::uint8_t>& HeadlessHost::render(int frames) {
   for (ImGuiKey k : keys_) io.KeysDown[k] = false;
   keys_.clear();
   chars_.clear();
+  return pixels_;
+}
+
+const std::vector<std::uint8_t>& HeadlessHost::render_with(const std::function<void()>& paint, int frames) {
+  paint_ = paint;
+  try {
+    render(frames);
+  } catch (...) {
+    paint_ = nullptr;
+    throw;
+  }
+  paint_ = nullptr;
   return pixels_;
 }
 

@@ -2,6 +2,7 @@
 // `stepwise render` and the tests. Never link this with libGL: both export gl* (docs/visualizer.md).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 #include "app.hpp"
@@ -20,6 +21,8 @@ class HeadlessHost {
   App& app() { return *app_; }
   // Builds and draws `frames` frames (layout settles over two); returns top-down RGBA rows.
   const std::vector<std::uint8_t>& render(int frames = 2);
+  // The same, drawing `paint` (e.g. into the background draw list) instead of the app: a chart.
+  const std::vector<std::uint8_t>& render_with(const std::function<void()>& paint, int frames = 2);
   int width() const { return w_; }
   int height() const { return h_; }
   // RGBA of one pixel of the last render.
@@ -40,6 +43,7 @@ class HeadlessHost {
   bool mouse_down_ = false;
   std::vector<ImGuiKey> keys_;
   std::string chars_;
+  std::function<void()> paint_;  // set during render_with
 };
 
 }  // namespace sw::vis

@@ -27,16 +27,17 @@ void value_cell(const VarState& v) {
     ImGui::SameLine();
   }
   ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
-  if (v.shape == VarShape::scalar && !v.is_int && v.text.find('/') != std::string::npos) {  // vectors and lists: no single decimal
-    ImGui::SameLine();
-    ImGui::TextDisabled("= %.9g", v.value);
-  }
+  if (const std::string approx = approx_suffix(v); !approx.empty()) ImGui::SameLine(0, 0), ImGui::TextDisabled("%s", approx.c_str());
 }
 
 // Exact irrational results (a sphere's t, rounded to 128 bits) run to 80 digits and would squeeze
 // the compare columns: show those as a decimal, the exact text on hover.
 void compare_cell(const VarState& v) {
-  if (v.text.size() <= 24) return ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
+  if (v.text.size() <= 24) {
+    ImGui::TextColored(var_colour(v), "%s", v.text.c_str());
+    if (const std::string approx = approx_suffix(v); !approx.empty()) ImGui::SameLine(0, 0), ImGui::TextDisabled("%s", approx.c_str());
+    return;
+  }
   ImGui::TextColored(var_colour(v), "~%.15g", v.value);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.text.c_str());
 }
@@ -81,7 +82,9 @@ void App::draw_state(ImVec2 pos, ImVec2 size) {
   const std::size_t step_b = std::min(step_, b_->last());
   const auto sb = b_->state_at(step_b);
   if (step_b != step_ && !compare_.other) ImGui::TextColored(theme::kError, "%s has only %zu steps", compare_.label().c_str(), b_->size());
-  if (ImGui::BeginTable("vars2", 4, kTable)) {
+  const bool plot = !compare_.other;  // steps pair up only for two number types
+  const float plot_h = 64;
+  if (ImGui::BeginTable("vars2", 4, kTable, ImVec2(0, plot ? -(plot_h + ImGui::GetFrameHeightWithSpacing() + 8) : 0))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("variable", ImGuiTableColumnFlags_WidthFixed, 70);
     ImGui::TableSetupColumn(compare_.other ? std::string(alg_->id).c_str() : std::string(numeric_name(numeric_)).c_str());
@@ -107,6 +110,8 @@ void App::draw_state(ImVec2 pos, ImVec2 size) {
     }
     ImGui::EndTable();
   }
+  if (plot)
+    if (auto s = diff_plot_.draw(a_, b_, step_, plot_h)) set_step(*s), playing_ = false;
   ImGui::PopStyleVar();
   ImGui::End();
 }

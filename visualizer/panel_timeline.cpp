@@ -71,6 +71,7 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
   char format[160];  // the step, its line and kind on the slider: no row of their own
   std::snprintf(format, sizeof format, "step %%" PRIu64 " of %zu   line %u   %s", last, st.line, std::string(kind_name(st.kind)).c_str());
   if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &s, &lo, &hi, format)) set_step(s), playing_ = false;
+  if (stats_ && !compare_.other) draw_divergence_ticks(ImGui::GetWindowDrawList(), stats_->divergences, last, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   // The keys, for the one at the keyboard, in one row: the longest that fits (none when presenting).
   const char* keys[] = {"Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "
                         "F fit   P present   Ctrl+Left/Right lesson",

@@ -91,6 +91,9 @@ void App::draw_toolbar(ImVec2 pos, ImVec2 size) {
     }
     flow(ImGui::CalcTextSize("Fit view").x + 2 * ImGui::GetStyle().FramePadding.x, gap);
     if (ImGui::Button("Fit view") && canvases_[0]) canvases_[0]->fit();
+    ImGui::SameLine();
+    if (ImGui::Button("Accuracy")) accuracy_open_ = !accuracy_open_;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide a chart of every number type's speed against its wrong outputs (a short bench)");
   }
   // Row 2: the input. Segments get four exact fields; anything else a JSON field. Presentation
   // mode hides rows 2 and 3.

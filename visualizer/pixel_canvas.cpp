@@ -91,8 +91,9 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
   size_ = size;
   ImGui::InvisibleButton("##canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered(), active = ImGui::IsItemActive();
-  if (in.model && fit_pending_) do_fit(*in.model), fit_pending_ = false;
   handle_view_input(hovered, in.keys);
+  // After the keys, so that F fits before the compare view's other canvas follows (and clears) it.
+  if (in.model && fit_pending_) do_fit(*in.model), fit_pending_ = false;
   if (in.follow && in.model && !active) {  // playing: pan when the current point leaves the view
     std::optional<std::array<double, 2>> at = in.model->point_at(in.step);
     if (auto px = in.model->pixel_at(in.step)) at = std::array<double, 2>{double(px->x), double(px->y)};
@@ -154,6 +155,7 @@ CanvasEvents PixelCanvas::draw(const CanvasInput& in, ImVec2 size) {
     outline_.draw(dl, in.model, {v.x0, v.y0, v.x1, v.y1}, 3 / scale_, [&](double x, double y) { return to_screen(x, y); });
   }
   if (in.model) draw_geometry(dl, in);
+  draw_marked(dl, in.marked);
 
   // Hover: which cell, and which step plotted it.
   if (hovered && in.model && dragging_ < 0) {

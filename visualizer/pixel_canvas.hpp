@@ -23,6 +23,7 @@ class PixelCanvas final : public Canvas {
   void handle_view_input(bool hovered, bool keys);
   void draw_grid(ImDrawList* dl) const;
   void draw_geometry(ImDrawList* dl, const CanvasInput& in) const;
+  void draw_marked(ImDrawList* dl, std::span<const Pixel> cells) const;
   // The step's visible 2D items other than pixels (the pixel layer draws those), by kind.
   void paint_items(ImDrawList* dl, const TraceModel& m, std::size_t step) const;
 

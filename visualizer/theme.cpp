@@ -14,8 +14,9 @@ Fonts setup_style(float scale) {
   if (std::filesystem::exists(sans) && std::filesystem::exists(mono) && std::filesystem::exists(bold)) {
     ImFontConfig cfg;
     cfg.OversampleH = 2;
-    f.body = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * scale, &cfg);
-    f.mono = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * scale, &cfg);
+    static constexpr ImWchar kRanges[] = {0x0020, 0x00FF, 0x2248, 0x2248, 0};  // Latin-1 and the state panel's "≈"
+    f.body = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * scale, &cfg, kRanges);
+    f.mono = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * scale, &cfg, kRanges);
     f.title = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * scale, &cfg);
     const float big = scale * kPresentScale;
     f.body_big = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * big, &cfg);

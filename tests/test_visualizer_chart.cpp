@@ -1,0 +1,169 @@
+// The accuracy chart: `stepwise bench --plot` as SVG (well-formed, one marker per mode, exact and
+// filtered at 0%) and PNG (the size asked, not blank), its refusals, and the app's Accuracy window
+// (a bench on a background thread, then the same chart on screen).
+#ifdef SW_HAVE_VISUALIZER
+#include <catch2/catch.hpp>
+#include <stb_image.h>
+#include <chrono>
+#include <regex>
+#include <thread>
+#include "cli_harness.hpp"
+#include "headless.hpp"
+
+using namespace sw;
+using namespace sw::vis;
+using sw::testing::run_stepwise;
+using sw::testing::scratch;
+using sw::testing::sh_quote;
+using sw::testing::slurp;
+
+namespace {
+
+// Every <tag ...> is closed by /> or a matching </tag>, in nesting order; returns the open tags
+// left (empty when balanced) or "error" on a stray closing tag.
+std::string unbalanced_tags(const std::string& xml) {
+  std::vector<std::string> stack;
+  std::size_t at = 0;
+  for (int guard = 0; guard < 1000000; ++guard) {
+    at = xml.find('<', at);
+    if (at == std::string::npos) break;
+    const std::size_t end = xml.find('>', at);
+    if (end == std::string::npos) return "error: unterminated tag";
+    const std::string tag = xml.substr(at + 1, end - at - 1);
+    at = end + 1;
+    if (tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
+    if (tag[0] == '/') {
+      if (stack.empty() || stack.back() != tag.substr(1)) return "error: stray </" + tag.substr(1) + ">";
+      stack.pop_back();
+    } else if (tag.back() != '/') {
+      stack.push_back(tag.substr(0, tag.find(' ')));
+    }
+  }
+  std::string left;
+  for (const auto& t : stack) left += t + " ";
+  return left;
+}
+
+int count(const std::string& s, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The y of a marker: its group's translate(x,y).
+double marker_y(const std::string& svg, const std::string& cls) {
+  std::smatch m;
+  REQUIRE(std::regex_search(svg, m, std::regex("<g class=\"" + cls + "\" transform=\"translate\\(([-0-9.e]+),([-0-9.e]+)\\)\"")));
+  return std::stod(m[2]);
+}
+
+}  // namespace
+
+TEST_CASE("visualizer chart: bench --plot writes an SVG with one marker per mode and labelled axes", "[visualizer][chart]") {
+  const auto dir = scratch("plot-svg");
+  const auto out = dir / "dda.svg";
+  const auto r = run_stepwise("bench dda-line --repeats 1 --set random --plot " + sh_quote(out.string()));
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const std::string svg = slurp(out);
+  CHECK(svg.rfind("<?xml", 0) == 0);
+  CHECK(unbalanced_tags(svg).empty());
+  CHECK(count(svg, "<svg ") == 1);
+  const Algorithm& alg = find_algorithm("dda-line");
+  for (Numeric n : alg.numerics) {
+    INFO(numeric_name(n));
+    CHECK(count(svg, "class=\"marker " + std::string(numeric_name(n)) + " random\"") == 1);
+    CHECK(count(svg, "class=\"legend " + std::string(numeric_name(n)) + "\"") == 1);
+  }
+  CHECK(count(svg, "class=\"marker ") == int(alg.numerics.size()));
+  CHECK_THAT(svg, Catch::Contains("class=\"axis-label x\"") && Catch::Contains("ns per output unit (log scale)"));
+  CHECK_THAT(svg, Catch::Contains("class=\"axis-label y\"") && Catch::Contains("cases differing from exact (%)"));
+  CHECK(count(svg, "class=\"tick x\"") >= 2);
+  CHECK(count(svg, "class=\"tick y\"") >= 2);
+  CHECK_THAT(svg, Catch::Contains("dda-line, set random"));
+  // Exact and filtered equal exact by definition: no marker sits lower (larger y) than theirs.
+  const double y_exact = marker_y(svg, "marker exact random"), y_filtered = marker_y(svg, "marker filtered random");
+  CHECK(std::fabs(y_exact - y_filtered) < 0.01);
+  for (Numeric n : alg.numerics) CHECK(marker_y(svg, "marker " + std::string(numeric_name(n)) + " random") <= y_exact + 0.01);
+}
+
+TEST_CASE("visualizer chart: bench --plot writes a PNG of the requested size that is not blank", "[visualizer][chart]") {
+  const auto dir = scratch("plot-png");
+  const auto out = dir / "dda.png";
+  const auto r = run_stepwise("bench dda-line --repeats 1 --set random --numeric float --numeric exact --plot-size 800x500 --plot " + sh_quote(out.string()));
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  int w = 0, h = 0, n = 0;
+  unsigned char* img = stbi_load(out.c_str(), &w, &h, &n, 4);
+  REQUIRE(img);
+  CHECK(w == 800);
+  CHECK(h == 500);
+  // Not blank: the float marker's orange and the exact marker's near-white are both painted.
+  const std::uint32_t orange = mode_colour(Numeric::f32), white = mode_colour(Numeric::exact);
+  int orange_px = 0, white_px = 0;
+  for (int i = 0; i < w * h; ++i) {
+    const std::uint32_t c = std::uint32_t(img[4 * i]) | std::uint32_t(img[4 * i + 1]) << 8 | std::uint32_t(img[4 * i + 2]) << 16;
+    orange_px += c == (orange & 0xffffffu);
+    white_px += c == (white & 0xffffffu);
+  }
+  stbi_image_free(img);
+  CHECK(orange_px >= 40);  // a 6 px marker and the legend's
+  CHECK(white_px >= 40);
+}
+
+TEST_CASE("visualizer chart: bench --plot refuses a bad name, an unwritable place or a bad size with one line and no file", "[visualizer][chart]") {
+  const auto dir = scratch("plot-bad");
+  struct Bad {
+    std::string args, expect;
+  };
+  const std::vector<Bad> bad = {
+      {"--plot " + sh_quote((dir / "chart.txt").string()), "must end in .png or .svg"},
+      {"--plot " + sh_quote((dir / "missing" / "chart.png").string()), "cannot write"},
+      {"--plot " + sh_quote((dir / "chart.svg").string()) + " --plot-size 10x10", "--plot-size"},
+      {"--plot " + sh_quote(dir.string() + "/"), ""},
+  };
+  for (const Bad& b : bad) {
+    INFO(b.args);
+    const auto r = run_stepwise("bench dda-line --repeats 1 --set random " + b.args);
+    CHECK(r.status == 2);
+    CHECK(count(r.err, "\n") == 1);
+    CHECK_THAT(r.err, Catch::StartsWith("stepwise: error: ") && Catch::Contains(b.expect));
+    CHECK(r.out.empty());  // refused before the bench ran
+    CHECK(std::filesystem::is_empty(dir));
+  }
+}
+
+TEST_CASE("visualizer chart: the Accuracy window benches on a thread and shows the chart", "[visualizer][chart]") {
+  HeadlessHost host(1100, 700);
+  App& app = host.app();
+  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[9,4]})", "t"), Numeric::exact));
+  app.set_accuracy_open(true);
+  host.render(1);
+  REQUIRE(app.accuracy().run());
+  // The frames go on while the thread works (bounded wait: the bench takes about a second).
+  int frames = 0;
+  for (; frames < 3000 && !app.accuracy().run()->finished(); ++frames) {
+    host.render(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  REQUIRE(app.accuracy().run()->finished());
+  CHECK(app.accuracy().run()->error().empty());
+  CHECK(app.accuracy().run()->set() == "random");  // the first of the family's sets
+  host.render(2);
+  const Chart& chart = app.accuracy().chart();
+  const Algorithm& alg = find_algorithm("dda-line");
+  for (Numeric n : alg.numerics) {
+    const std::string role = "marker " + std::string(numeric_name(n)) + " random";
+    const auto it = std::find_if(chart.items.begin(), chart.items.end(), [&](const ChartItem& c) { return c.role == role; });
+    INFO(role);
+    REQUIRE(it != chart.items.end());
+    // The marker is on screen in its colour at its centre.
+    const ImVec2 o = app.accuracy().chart_origin();
+    const std::uint32_t px = host.pixel(int(o.x + it->x0), int(o.y + it->y0));
+    CHECK((px & 0xffffffu) == (mode_colour(n) & 0xffffffu));
+  }
+  app.set_accuracy_open(false);
+  host.render(1);
+  CHECK_FALSE(app.accuracy().run());
+}
+#endif  // SW_HAVE_VISUALIZER
