@@ -85,7 +85,7 @@ def main():
     if len(sys.argv) < 4:
         fail("usage: lesson_export_browser.py STEPWISE LESSON WORKDIR [WxH]")
     stepwise, lesson, work = sys.argv[1], os.path.abspath(sys.argv[2]), os.path.abspath(sys.argv[3])
-    size = sys.argv[4] if len(sys.argv) > 4 else "400x260"
+    size = sys.argv[4] if len(sys.argv) > 4 else "1024x640"  # the smallest layout the app supports
     chromium, chromedriver = shutil.which("chromium"), shutil.which("chromedriver")
     if not chromium or not chromedriver:
         fail("chromium and chromedriver are needed (scripts/setup.sh installs them)")

@@ -76,11 +76,14 @@ TEST_CASE("visualizer compare: mismatched pixels are outlined on both canvases, 
   App& app = host.app();
   REQUIRE(app.open_lesson(kLesson04));  // zoomed onto step 3939, the first divergence
   const TraceModel& a = *app.model(0);
-  app.set_step(a.last());
+  // Just past the last divergence: every mismatch is plotted and, as the view follows the step,
+  // still on the canvas.
+  const std::size_t shown = app.compare_stats()->divergences.back() + 2;
+  app.set_step(shown);
   host.render();
   const auto& cells = app.compare_stats()->mismatched_cells;
   const std::set<Pixel> marked(cells.begin(), cells.end());
-  const auto current = a.pixel_at(a.last());
+  const auto current = a.pixel_at(shown);
   auto off_current = [&](Pixel c) { return !current || std::abs(current->x - c.x) > 1 || std::abs(current->y - c.y) > 1; };
   auto isolated = [&](Pixel c) {  // no marked neighbour shares an edge's pixels
     for (int dx = -1; dx <= 1; ++dx)

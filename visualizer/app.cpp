@@ -230,6 +230,17 @@ void App::set_step(std::size_t step) {
   step_ = quiz_.on ? quiz_gate(step) : step;
 }
 
+void App::restart_view() {
+  for (auto& c : canvases_)
+    if (c) c->fit();
+  followed_step_ = ~std::size_t(0);
+  // The panels' measured heights too: a fresh open fits the canvas on its first frame, at the size
+  // the unmeasured layout gives, and the frames after settle from there.
+  toolbar_content_h_ = timeline_content_h_ = 0, listing_content_h_ = kUnmeasuredListingH;
+  listing_scrolled_to_ = ~std::size_t(0);
+  if (lesson_ && lesson_->focus) jump_and_focus(lesson_->start_step);
+}
+
 void App::jump_and_focus(std::size_t step) {
   set_step(step);
   playing_ = false;

@@ -50,6 +50,9 @@ class App {
   // first declared view shows on opening; a re-run with a new input or number type keeps the view.
   bool set_view(View view);
   View view() const { return view_; }
+  // Back to the view the open lesson or algorithm starts with, as a fresh open shows it: whatever
+  // steps were taken since, set_step(N) then draws what `render --step N` draws (the HTML export).
+  void restart_view();
   // Goes to a step and centres the canvas on it, zoomed in enough to see single pixels.
   void jump_and_focus(std::size_t step);
   // Something moves without input (playback): the window host redraws at full rate, else it
@@ -180,7 +183,9 @@ class App {
   std::uint32_t highlighted_line_ = 0;
   std::vector<std::array<float, 3>> listing_rows_;
   std::size_t listing_scrolled_to_ = ~std::size_t(0);
-  float listing_content_h_ = 300;  // the listing's full height, measured each frame
+  int listing_scroll_frames_ = 0;  // frames left to keep the current line centred
+  static constexpr float kUnmeasuredListingH = 300;
+  float listing_content_h_ = kUnmeasuredListingH;  // the listing's full height, measured each frame
   DiffPlot diff_plot_;              // the compare view's |difference| plot (state panel)
   bool accuracy_open_ = false;
   AccuracyWindow accuracy_;         // last: its destructor joins the bench threads first

@@ -181,7 +181,8 @@ int run_lesson_export(const ExportOptions& o) {
   if (std::error_code ec; !fs::create_directory(temp.path() / "frames", ec))
     throw InputError("--html " + o.html_dir + ": cannot create frames/ (" + ec.message() + ")");
   for (std::size_t s = from; s <= to; ++s) {
-    app.set_step(s);  // as `stepwise render --lesson --step s` draws it
+    app.restart_view();  // each frame as `stepwise render --lesson --step s` draws it, from the opening view
+    app.set_step(s);
     write_png(temp.path() / frame_name(s), host.render(3).data(), w, h);
   }
   {

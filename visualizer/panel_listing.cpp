@@ -71,7 +71,10 @@ void App::draw_listing(ImVec2 pos, ImVec2 size) {
     dl->ChannelsSetCurrent(0);
     if (current) {
       dl->AddRectFilled(ImVec2(top.x - 4, top.y - 2), ImVec2(top.x + ImGui::GetContentRegionAvail().x + 4, bottom - 2), theme::kLineHighlight, 2);
-      if (listing_scrolled_to_ != step_) ImGui::SetScrollFromPosY(top.y - ImGui::GetWindowPos().y, 0.5f), listing_scrolled_to_ = step_;
+      // Centre the line for two frames after the step changes: the first frame of a window clamps
+      // the scroll to a content height it has not measured yet.
+      if (listing_scrolled_to_ != step_) listing_scrolled_to_ = step_, listing_scroll_frames_ = 2;
+      if (listing_scroll_frames_ > 0) ImGui::SetScrollFromPosY(top.y - ImGui::GetWindowPos().y, 0.5f), --listing_scroll_frames_;
     }
     dl->ChannelsMerge();
   }
