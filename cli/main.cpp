@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 #include "catalog.hpp"
+#include "scene_command.hpp"  // `stepwise scene check`
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
 #include "lesson_command.hpp"  // visualizer/: `stepwise lesson export|lint`
@@ -105,6 +106,9 @@ int main(int argc, char** argv) {
   bench->add_option("--set", bench_set, "Only this input set (e.g. random, long)");
   bench->add_option("--repeats", repeats, "Timed repeats; the best is reported")->check(CLI::Range(1, 100));
 
+  sw::cli::SceneCommands scene_cmds;
+  sw::cli::add_scene_commands(app, scene_cmds);
+
 #ifdef SW_HAVE_RENDER
   sw::vis::RenderOptions render_opts;
   auto* render = sw::vis::add_render_command(app, render_opts);
@@ -129,6 +133,7 @@ int main(int argc, char** argv) {
     if (*quiz) return sw::vis::run_quiz(quiz_opts);
     if (*lesson_cmds.group) return sw::vis::run_lesson_commands(lesson_cmds);
 #endif
+    if (*scene_cmds.group) return sw::cli::run_scene_commands(scene_cmds);
     if (*schema) {
       std::cout << trace_schema();
       return 0;
