@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 #include "catalog.hpp"
+#include "scene_command.hpp"  // `stepwise scene check`
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
 #include "bench_plot.hpp"      // visualizer/: `stepwise bench --plot`
@@ -108,6 +109,9 @@ int main(int argc, char** argv) {
   bench->add_option("--plot", bench_plot, "Also draw the results as a chart: FILE.png or FILE.svg");
   bench->add_option("--plot-size", bench_plot_size, "The chart's size WxH (default 1280x720)");
 
+  sw::cli::SceneCommands scene_cmds;
+  sw::cli::add_scene_commands(app, scene_cmds);
+
 #ifdef SW_HAVE_RENDER
   sw::vis::RenderOptions render_opts;
   auto* render = sw::vis::add_render_command(app, render_opts);
@@ -132,6 +136,7 @@ int main(int argc, char** argv) {
     if (*quiz) return sw::vis::run_quiz(quiz_opts);
     if (*lesson_cmds.group) return sw::vis::run_lesson_commands(lesson_cmds);
 #endif
+    if (*scene_cmds.group) return sw::cli::run_scene_commands(scene_cmds);
     if (*schema) {
       std::cout << trace_schema();
       return 0;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the seed corpora of the fuzz harnesses (fuzz/corpus/{run,check,lesson}) and fuzz/stepwise.dict
-from the catalog's examples, the hard cases in tests/cases and the lessons. Usage: make_corpus.py STEPWISE"""
+"""Writes the seed corpora of the fuzz harnesses (fuzz/corpus/{run,check,lesson,scene}) and fuzz/stepwise.dict
+from the catalog's examples, the hard cases in tests/cases, the lessons and the scenes. Usage: make_corpus.py STEPWISE"""
 import json, pathlib, shutil, subprocess, sys, tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -23,7 +23,7 @@ def accepts(alg, mode, line):
 
 catalog = [json.loads(l) for l in sh("list", "--json").stdout.splitlines()]
 shutil.rmtree(OUT, ignore_errors=True)
-for d in ("run", "check", "lesson"):
+for d in ("run", "check", "lesson", "scene"):
     (OUT / d).mkdir(parents=True)
 
 cases = {}  # family -> [(algorithm or None, input line)]
@@ -65,6 +65,9 @@ for lesson in sorted((ROOT / "lessons").glob("*.md")):
     shutil.copy(lesson, OUT / "lesson" / lesson.name)
 for lesson in sorted((ROOT / "tests" / "cases" / "lessons-broken").glob("*.md")):
     shutil.copy(lesson, OUT / "lesson" / ("broken-" + lesson.name))
+for scene in sorted((ROOT / "scenes").glob("*.json")):
+    shutil.copy(scene, OUT / "scene" / scene.name)
+    collect_keys(json.loads(scene.read_text()))
 
 tokens = sorted(keys) + [a["id"] for a in catalog] + ["float", "double", "int", "filtered", "exact", "reference"]
 words = ["{", "}", "[", "]", ",", ":", "\"", "1/3", "-0", "1e308", "5e-324", "NaN", "Infinity", "-Infinity", "\\u0000",
@@ -75,4 +78,4 @@ with open(ROOT / "fuzz" / "stepwise.dict", "w") as d:
     d.write("# Tokens of stepwise's inputs, traces and lessons (written by fuzz/make_corpus.py).\n")
     for t in dict.fromkeys(words + tokens):
         d.write(json.dumps(t) + "\n")
-print({d: len(list((OUT / d).iterdir())) for d in ("run", "check", "lesson")})
+print({d: len(list((OUT / d).iterdir())) for d in ("run", "check", "lesson", "scene")})

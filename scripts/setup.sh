@@ -12,7 +12,7 @@ PACKAGES=(
   libimgui-dev libstb-dev libglfw3-dev libgl-dev libosmesa6-dev libgif-dev
   xvfb xauth libembree-dev fonts-dejavu-core libtinyobjloader-dev libnanoflann-dev
   libcgal-demo clang libclang-rt-14-dev llvm-14
-  libmd4c-dev libmd4c-html0-dev chromium chromium-driver python3
+  libmd4c-dev libmd4c-html0-dev chromium chromium-driver python3 python3-jsonschema
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
