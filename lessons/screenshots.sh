@@ -12,7 +12,7 @@ shot 01-dda-line 14        # pixels so far, with dp0 in the state panel
 shot 02-grid-walk 6        # the second cell of the two-pixel corner case
 shot 03-bresenham 14       # the decision variable e after a minor step
 shot 04-float-drift 3939   # the first pixel where float and exact differ
-shot 05-triangle-crack     # (ray family) the lesson's start step
+shot 05-triangle-crack 10  # float: v < 0 in triangle 1, the ray falls through
 shot 06-far-sphere         # (ray family) the lesson's start step
 shot 07-midpoint-circle        # the decision after the first rows
 shot 08-forward-difference-drift  # the first pixel where float and exact differ
