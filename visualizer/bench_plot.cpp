@@ -1,8 +1,8 @@
 #include "bench_plot.hpp"
-#include <charconv>
 #include "chart_draw.hpp"
 #include "headless.hpp"
 #include "image_io.hpp"
+#include "render_command.hpp"  // parse_frame_size
 #include "trace_io.hpp"
 
 namespace sw::vis {
@@ -19,12 +19,7 @@ bool ends_with(const std::string& s, std::string_view tail) {
 
 std::pair<int, int> check_plot_target(const std::string& path, const std::string& size) {
   if (!ends_with(path, ".png") && !ends_with(path, ".svg")) throw InputError("--plot '" + path + "': the file name must end in .png or .svg");
-  const auto x = size.find('x');
-  int w = 0, h = 0;
-  const bool ok = x != std::string::npos && std::from_chars(size.data(), size.data() + x, w).ptr == size.data() + x &&
-                  std::from_chars(size.data() + x + 1, size.data() + size.size(), h).ptr == size.data() + size.size();
-  if (!ok || w < 320 || h < 240 || w > 4096 || h > 4096)
-    throw InputError("--plot-size '" + size + "': expected WxH with 320 <= W, 240 <= H and both <= 4096");
+  const auto [w, h] = parse_frame_size(size, "--plot-size");
   { AtomicFile trial(path); }  // throws naming the path if it cannot be written; leaves nothing
   return {w, h};
 }

@@ -19,14 +19,6 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-// The smallest of 1, 2, 2.5, 5 times a power of ten that is >= v (v > 0).
-double nice_ceil(double v) {
-  const double p = std::pow(10.0, std::floor(std::log10(v)));
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-    if (m * p >= v * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
-
 std::string tick_label(int decade) {
   const double v = std::pow(10.0, decade);
   if (decade >= 6 || decade <= -4) return "1e" + std::to_string(decade);
@@ -248,6 +240,13 @@ std::string chart_svg(const Chart& c) {
   }
   o << "</svg>\n";
   return o.str();
+}
+
+double nice_ceil(double v) {
+  const double p = std::pow(10.0, std::floor(std::log10(v)));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (m * p >= v * (1 - 1e-12)) return m * p;
+  return 10 * p;
 }
 
 }  // namespace sw::vis

@@ -42,6 +42,8 @@ std::string chart_svg(const Chart& chart);
 
 // A mode's colour in charts (0xAABBGGRR) and its marker shape.
 std::uint32_t mode_colour(Numeric n);
+// The smallest of 1, 2, 2.5, 5 times a power of ten that is >= v (v > 0): an axis's round end.
+double nice_ceil(double v);
 ChartItem::Shape mode_shape(Numeric n);
 
 }  // namespace sw::vis

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include "chart.hpp"  // nice_ceil
 #include "theme.hpp"
 
 namespace sw::vis {
@@ -11,14 +12,6 @@ constexpr double kDegree = 3.141592653589793 / 180;
 constexpr double kScaleWithin = 80;  // degrees from the normal that set the outer ring
 constexpr ImU32 kModeCurve = IM_COL32(255, 190, 90, 255);
 constexpr ImU32 kReferenceCurve = IM_COL32(235, 235, 245, 150);
-
-// The smallest of 1, 2, 2.5, 5 times a power of ten that is >= v (v > 0).
-double nice_ceil(double v) {
-  const double p = std::pow(10.0, std::floor(std::log10(v)));
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-    if (m * p >= v * (1 - 1e-12)) return m * p;
-  return 10 * p;
-}
 
 std::string short_value(double v) {
   char b[32];

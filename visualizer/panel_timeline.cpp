@@ -1,4 +1,6 @@
-// The timeline: step, play, speed, scrub, jump to start/end or to the next step of a kind.
+// The timeline: step, play, speed, scrub, jump to start/end or to the next step of a kind; the keys
+// and the playback that move it.
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include "app.hpp"
@@ -84,6 +86,45 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
     }
   timeline_content_h_ = content_height();  // the next frame's layout
   ImGui::End();
+}
+
+// Keys and playback, which move the timeline.
+
+void App::handle_keys() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput || !a_) return;
+  auto pressed = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k)); };
+  if (pressed(ImGuiKey_Space)) playing_ = !playing_, carry_ = 0;
+  if (pressed(ImGuiKey_Escape)) presenting_ = false;
+  if (io.KeyCtrl) {  // Ctrl + Left/Right: the previous or next lesson
+    if (pressed(ImGuiKey_LeftArrow)) open_adjacent_lesson(-1);
+    if (pressed(ImGuiKey_RightArrow)) open_adjacent_lesson(+1);
+  } else if (!io.KeyShift) {  // Shift + arrows pan the canvas
+    if (pressed(ImGuiKey_LeftArrow) && step_ > 0) set_step(step_ - 1), playing_ = false;
+    if (pressed(ImGuiKey_RightArrow)) set_step(step_ + 1), playing_ = false;
+  }
+  if (pressed(ImGuiKey_Home)) set_step(0);
+  if (pressed(ImGuiKey_End)) set_step(a_->last());
+  for (ImWchar ch : io.InputQueueCharacters) {
+    if (ch == '+' || ch == '=') speed_ = std::min<int>(speed_ + 1, int(kSpeeds.size()) - 1);
+    if (ch == '-' || ch == '_') speed_ = std::max(speed_ - 1, 0);
+    if (ch == 'p' || ch == 'P') presenting_ = !presenting_;
+    if ((ch == 'v' || ch == 'V') && alg_ && alg_->views.size() > 1) {  // the next declared view
+      const auto it = std::find(alg_->views.begin(), alg_->views.end(), view_);
+      set_view(it == alg_->views.end() || it + 1 == alg_->views.end() ? alg_->views.front() : *(it + 1));
+    }
+    if ((ch == 'q' || ch == 'Q') && lesson_) set_quiz(!quiz_.on);
+  }
+}
+
+void App::advance_playback(float dt) {
+  if (!playing_ || !a_) return;
+  // The window host sleeps while idle: the first frame after a wake-up may report a long dt.
+  carry_ += double(std::min(dt, 0.1f)) * kSpeeds[speed_];
+  const double whole = std::floor(carry_);
+  carry_ -= whole;
+  set_step(step_ + static_cast<std::size_t>(whole));
+  if (step_ >= a_->last()) playing_ = false;
 }
 
 }  // namespace sw::vis

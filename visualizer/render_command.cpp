@@ -9,13 +9,13 @@
 
 namespace sw::vis {
 
-std::pair<int, int> parse_frame_size(const std::string& s) {
+std::pair<int, int> parse_frame_size(const std::string& s, std::string_view option) {
   const auto x = s.find('x');
   int w = 0, h = 0;
   const bool ok = x != std::string::npos && std::from_chars(s.data(), s.data() + x, w).ptr == s.data() + x &&
                   std::from_chars(s.data() + x + 1, s.data() + s.size(), h).ptr == s.data() + s.size();
   if (!ok || w < 320 || h < 240 || w > 4096 || h > 4096)
-    throw InputError("--size '" + s + "': expected WxH with 320 <= W, 240 <= H and both <= 4096");
+    throw InputError(std::string(option) + " '" + s + "': expected WxH with 320 <= W, 240 <= H and both <= 4096");
   return {w, h};
 }
 

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include "trace_io.hpp"
 
 namespace sw::vis {
@@ -20,7 +21,7 @@ struct RenderOptions {
 };
 
 // "WxH" with 320 <= W, 240 <= H, both <= 4096; throws InputError naming --size otherwise.
-std::pair<int, int> parse_frame_size(const std::string& size);
+std::pair<int, int> parse_frame_size(const std::string& size, std::string_view option = "--size");
 
 // Adds the subcommand; main calls run_render when it was given.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& opts);
