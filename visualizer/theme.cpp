@@ -14,14 +14,15 @@ Fonts setup_style(float scale) {
   if (std::filesystem::exists(sans) && std::filesystem::exists(mono) && std::filesystem::exists(bold)) {
     ImFontConfig cfg;
     cfg.OversampleH = 2;
-    static constexpr ImWchar kRanges[] = {0x0020, 0x00FF, 0x2248, 0x2248, 0};  // Latin-1 and the state panel's "≈"
+    // Latin-1, the dashes, quotes, bullet and ellipsis of narration, and the "≈" of exact values.
+    static constexpr ImWchar kRanges[] = {0x0020, 0x00FF, 0x2013, 0x2026, 0x2248, 0x2248, 0};
     f.body = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * scale, &cfg, kRanges);
     f.mono = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * scale, &cfg, kRanges);
-    f.title = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * scale, &cfg);
+    f.title = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * scale, &cfg, kRanges);
     const float big = scale * kPresentScale;
-    f.body_big = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * big, &cfg);
-    f.mono_big = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * big, &cfg);
-    f.title_big = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * big, &cfg);
+    f.body_big = io.Fonts->AddFontFromFileTTF(sans.c_str(), 15.f * big, &cfg, kRanges);
+    f.mono_big = io.Fonts->AddFontFromFileTTF(mono.c_str(), 14.f * big, &cfg, kRanges);
+    f.title_big = io.Fonts->AddFontFromFileTTF(bold.c_str(), 16.f * big, &cfg, kRanges);
   }
   if (!f.body || !f.mono || !f.title || !f.body_big || !f.mono_big || !f.title_big) {
     io.Fonts->Clear();
