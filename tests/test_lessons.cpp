@@ -167,3 +167,26 @@ TEST_CASE("lessons: quiz answers are graded against the exact trace", "[lesson][
     CHECK_THROWS_AS(grade(*it, "no-such-line"), InputError);
   }
 }
+
+TEST_CASE("lessons: a template quotes the variable of the step's own listing before a callee's", "[lesson]") {
+  // gouraud-vs-phong records i (the pixel column) and calls shade, which records its own i (the
+  // light). Brute force: the newest record of i in a step of the same scope, else the newest at all.
+  const Lesson l = load_lesson(kLessons / "19-gouraud-phong.md");
+  const auto m = run_of(l, l.numeric);
+  const TraceView& t = m->trace();
+  int own_wins = 0;
+  for (std::size_t s = 0; s < m->size(); ++s) {
+    const VarRecord* same = nullptr;
+    const VarRecord* newest = nullptr;
+    for (std::size_t r = s + 1; r-- > 0 && !same;)
+      for (std::uint32_t v = t.at(r).var_end; v-- > t.at(r).var_begin;)
+        if (std::string_view(t.var_at(v).name) == "i") {
+          if (!newest) newest = &t.var_at(v);
+          if (t.at(r).scope == t.at(s).scope && !same) same = &t.var_at(v);
+        }
+    const VarRecord* want = same ? same : newest;
+    REQUIRE(m->latest_var(s, "i") == want);
+    own_wins += same && same != newest;
+  }
+  CHECK(own_wins > 0);  // the case arises: a callee's i is newer than the step's own
+}

@@ -187,14 +187,30 @@ const VarRecord* TraceModel::latest_var(std::size_t step, std::string_view name)
   if (it == names_.end()) return nullptr;
   const auto k = static_cast<std::size_t>(it - names_.begin());
   const TraceView& t = *rec_.trace;
-  // Scan back to the step's checkpoint, then take the checkpoint's entry.
-  for (std::size_t s = step + 1; s-- > step / kCheckpoint * kCheckpoint;) {
+  const std::uint8_t scope = t.at(step).scope;
+  // The steps [stop, step], newest first: the first record in the step's own scope wins, else the
+  // newest of any scope.
+  const std::size_t stop = step + 1 > kScopeScan ? step + 1 - kScopeScan : 0;
+  const VarRecord* any = nullptr;
+  for (std::size_t s = step + 1; s-- > stop;) {
     const StepRecord& st = t.at(s);
     for (std::uint32_t v = st.var_end; v-- > st.var_begin;)
-      if (name_of_var_[v] == k) return &t.var_at(v);
+      if (name_of_var_[v] == k) {
+        if (st.scope == scope) return &t.var_at(v);
+        if (!any) any = &t.var_at(v);
+      }
   }
-  const std::uint32_t v = checkpoints_[step / kCheckpoint * names_.size() + k];
-  return v == kNoStep ? nullptr : &t.var_at(v);
+  if (any || stop == 0) return any;
+  // Before the scan: the newest record, from the checkpoint at or before `stop` (it holds steps
+  // before its own start) and the steps from there to `stop`.
+  const std::size_t c = stop / kCheckpoint;
+  std::uint32_t latest = checkpoints_[c * names_.size() + k];
+  for (std::size_t s = c * kCheckpoint; s < stop; ++s) {
+    const StepRecord& st = t.at(s);
+    for (std::uint32_t v = st.var_begin; v < st.var_end; ++v)
+      if (name_of_var_[v] == k) latest = v;
+  }
+  return latest == kNoStep ? nullptr : &t.var_at(latest);
 }
 
 std::optional<std::size_t> TraceModel::find_kind(std::size_t from, StepKind kind, bool forward) const {

@@ -82,8 +82,11 @@ class TraceModel {
   // Every variable seen up to `step` (in first-appearance order) with its latest value.
   std::vector<VarState> state_at(std::size_t step) const;
   std::span<const std::string_view> var_names() const { return names_; }
-  // The latest record of the variable `name` at or before `step`; nullptr if none yet.
+  // The latest record of the variable `name` at or before `step`; nullptr if none yet. One recorded
+  // in the step's own listing (scope) wins over a later one of a callee or caller of the same name,
+  // among the last kScopeScan steps.
   const VarRecord* latest_var(std::size_t step, std::string_view name) const;
+  static constexpr std::size_t kScopeScan = 4096;
 
   // First step > from (or < from, backward) of the given kind; nullopt if none.
   std::optional<std::size_t> find_kind(std::size_t from, StepKind kind, bool forward) const;
