@@ -63,7 +63,7 @@ int run_quiz(const QuizOptions& o) {
         out.push_back(j.dump());
       } else {
         out.push_back((student.empty() ? "" : student + "  ") + "step " + std::to_string(step) + " " + std::string(quiz_type_name(q->type)) + ": " +
-                      (g.right ? "right (" + g.expected + ")" : "wrong: answered " + answer_text(*q, normal_answer(*q, a["answer"])) + ", the exact run gives " + g.expected));
+                      (g.right ? "right: " + g.expected : "wrong: answered " + answer_text(*q, normal_answer(*q, a["answer"])) + ", the exact run gives " + g.expected));
       }
     } catch (const InputError& e) {
       throw InputError(at + ": " + e.what());
@@ -71,7 +71,7 @@ int run_quiz(const QuizOptions& o) {
   }
   for (const std::string& l : out) std::cout << l << '\n';
   if (o.json) std::cout << Json{{"score", right}, {"answered", graded}, {"questions", questions.size()}}.dump() << '\n';
-  else std::cout << "score: " << right << " of " << graded << " answered right (" << questions.size() << " questions in the lesson)\n";
+  else std::cout << "score: " << right << " of " << graded << " answered right (" << questions.size() << (questions.size() == 1 ? " question" : " questions") << " in the lesson)\n";
   return 0;
 }
 
