@@ -89,6 +89,7 @@ Narration parse_heading(const std::string& heading, const Lesson& lesson) {
     n.conditions = parse_conditions(conditions);
   }
   auto w = words(key);
+  if (w.empty()) throw InputError("an empty section heading: expected '## intro', '## on ...' or '## quiz ...'");
   if (w.size() == 1 && w[0] == "intro" && conditions.empty()) return n;
   std::size_t i = 0;
   if (w[0] == "quiz") {
