@@ -181,7 +181,7 @@ void paint_segment(const Painter& p, const Scene3& sc, const Item3& it, std::vec
   const ImU32 col = it.value ? theme::sign_colour(*it.value) : label_colour(it.label, kPoint);
   float offset = 0;
   if (sc.first_ray && it.label) {
-    const auto [o, d] = *sc.first_ray;
+    const V3 o = sc.first_ray->first, d = sc.first_ray->second;  // not a structured binding: clang 14 cannot capture one
     auto off_line = [&](V3 q) { return glm::length(glm::cross(q - o, d)) / std::max(glm::length(d), 1e-300); };
     if (std::max(off_line(a), off_line(b)) <= 1e-9 * sc.radius) {
       std::size_t lane = 0;

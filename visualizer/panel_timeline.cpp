@@ -75,8 +75,8 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
   if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &s, &lo, &hi, format)) set_step(s), playing_ = false;
   if (stats_ && !compare_.other) draw_divergence_ticks(ImGui::GetWindowDrawList(), stats_->divergences, last, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   // The keys, for the one at the keyboard, in one row: the longest that fits (none when presenting).
-  const char* keys[] = {"Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "
-                        "F fit   P present   Ctrl+Left/Right lesson",
+  const char* keys[] = {("Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "
+                         "F fit   P present   Ctrl+Left/Right lesson"),
                         "Space play   Left/Right step   Home/End   +/- speed   wheel zoom   drag pan   F fit   P present   Ctrl+Left/Right lesson",
                         "Space play   Left/Right step   F fit   P present"};
   for (const char* k : keys)
