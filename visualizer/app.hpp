@@ -77,7 +77,8 @@ class App {
   const Question* quiz_pending() const;
   // Answers it (throws InputError for an answer of the wrong form); the grade, or nullopt if none waits.
   std::optional<Grade> answer(const Json& answer);
-  std::pair<int, int> quiz_score() const { return {quiz_.right, quiz_.asked}; }
+  // Right answers, answers.
+  std::pair<int, int> quiz_score() const;
 
   const Lesson* lesson() const { return lesson_ ? &*lesson_ : nullptr; }
 
@@ -163,7 +164,6 @@ class App {
       std::string answer;
     };
     std::vector<Answered> answered;
-    int right = 0, asked = 0;
   } quiz_;
   const QuizState::Answered* quiz_answered(std::size_t step) const;
   // Stops a forward move at the first unanswered question in [step_, target); returns where to go.

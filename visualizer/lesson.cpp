@@ -148,8 +148,8 @@ bool looks_like_section(const std::string& line) {
   return first == "on" || first == "intro" || first == "quiz";
 }
 
-void add_front_matter(Lesson& lesson, std::set<std::string>& seen, const std::string& key, const std::string& value) {
-  if (!seen.insert(key).second) throw InputError("front-matter key '" + key + "' appears twice");
+// The keys that are set here; the others are read after the block (parse_lesson).
+void add_front_matter(Lesson& lesson, const std::string& key, const std::string& value) {
   if (key == "title") lesson.title = value;
   else if (key == "view" && (value == "fit" || value == "step")) lesson.focus = value == "step";
   else if (key == "view") throw InputError("'view: " + value + "': expected fit or step");
@@ -168,7 +168,6 @@ Lesson parse_lesson(const std::string& raw, const std::string& where) {
   if (lines.empty() || trim(lines[0]) != "---") throw fail(0, "a lesson starts with a '---' front-matter line");
   Lesson lesson;
   lesson.path = where;
-  std::set<std::string> seen;
   std::map<std::string, std::pair<std::string, std::size_t>> fm;  // key -> value, line
   for (i = 1; i < lines.size() && trim(lines[i]) != "---"; ++i) {
     const std::string l = trim(lines[i]);
@@ -177,7 +176,8 @@ Lesson parse_lesson(const std::string& raw, const std::string& where) {
     if (colon == std::string::npos) throw fail(i, "expected 'key: value' in the front matter");
     const std::string key = trim(std::string_view(l).substr(0, colon)), value = trim(std::string_view(l).substr(colon + 1));
     try {
-      add_front_matter(lesson, seen, key, value);
+      if (fm.count(key)) throw InputError("front-matter key '" + key + "' appears twice");
+      add_front_matter(lesson, key, value);
     } catch (const InputError& e) {
       throw fail(i, e.what());
     }

@@ -62,6 +62,9 @@ struct Filled {
   std::string text;
   std::vector<std::string> problems;
 };
+// Component k of a recorded variable as the exact rational it stands for (an exact run's own
+// value, a float run's value exactly); nullopt for NaN or infinity.
+std::optional<Rational> exact_value(const TraceModel& run, const VarRecord& v, std::uint32_t k);
 Filled fill_templates(const std::string& text, const TraceModel& run, std::size_t step);
 // Whether a section's key, run and conditions match the step; problems as in Filled.
 bool section_matches(const Narration& n, const Lesson& lesson, const TraceModel& run, std::size_t step,

@@ -79,16 +79,9 @@ std::optional<Rational> value_of(const std::string& operand, const TraceModel& r
   }
   const auto r = resolve(operand, run, step, problem);
   if (!r) return std::nullopt;
-  const TraceView& t = run.trace();
-  const VarRecord& v = *r->var;
-  if (v.is_int) return Rational(static_cast<long>(t.int_value(v.slot + r->component)));
-  if (run.numeric() == Numeric::exact) return parse_rational(Json(t.num_text(v.slot + r->component)), operand);
-  const double d = t.component_double(v, r->component);
-  if (!std::isfinite(d)) {
-    problem = "'" + operand + "' is " + t.num_text(v.slot + r->component) + " at step " + std::to_string(step);
-    return std::nullopt;
-  }
-  return num::to_rational(d);
+  if (auto x = exact_value(run, *r->var, r->component)) return x;
+  problem = "'" + operand + "' is " + run.trace().num_text(r->var->slot + r->component) + " at step " + std::to_string(step);
+  return std::nullopt;
 }
 
 int rank(const Narration& n) {
@@ -104,6 +97,15 @@ const Narration* best(const Lesson& lesson, const TraceModel& run, std::size_t s
 }
 
 }  // namespace
+
+std::optional<Rational> exact_value(const TraceModel& run, const VarRecord& v, std::uint32_t k) {
+  const TraceView& t = run.trace();
+  if (v.is_int) return Rational(static_cast<long>(t.int_value(v.slot + k)));
+  if (run.numeric() == Numeric::exact) return parse_rational(Json(t.num_text(v.slot + k)), v.name);
+  const double d = t.component_double(v, k);
+  if (!std::isfinite(d)) return std::nullopt;
+  return num::to_rational(d);
+}
 
 bool section_matches(const Narration& n, const Lesson& lesson, const TraceModel& run, std::size_t step, std::vector<std::string>* problems) {
   if (step >= run.size()) return false;

@@ -50,14 +50,18 @@ std::optional<Grade> App::answer(const Json& a) {
   if (!q) return std::nullopt;
   const Grade g = grade(*q, a);
   quiz_.answered.push_back({q->step, g, answer_text(*q, normal_answer(*q, a))});
-  ++quiz_.asked;
-  quiz_.right += g.right;
   return g;
+}
+
+std::pair<int, int> App::quiz_score() const {
+  const auto right = std::count_if(quiz_.answered.begin(), quiz_.answered.end(), [](const auto& a) { return a.grade.right; });
+  return {static_cast<int>(right), static_cast<int>(quiz_.answered.size())};
 }
 
 void App::draw_quiz() {
   ImGui::Separator();
-  ImGui::TextColored(theme::kDim, "Quiz: %d of %d right, %zu questions in this lesson", quiz_.right, quiz_.asked, quiz_.questions.size());
+  const auto [right, asked] = quiz_score();
+  ImGui::TextColored(theme::kDim, "Quiz: %d of %d right, %zu questions in this lesson", right, asked, quiz_.questions.size());
   const auto* done = quiz_answered(step_);
   const Question* q = quiz_pending();
   if (!q && !done) return;

@@ -57,11 +57,12 @@ bool find_truth(Question& q, const TraceModel& run, bool declared, std::string& 
         const StepRecord& st = t.at(s);
         for (std::uint32_t v = st.var_begin; v < st.var_end; ++v)
           if (t.var_at(v).name == q.var && t.var_at(v).shape == VarShape::scalar) {
-            const VarRecord& r = t.var_at(v);
-            const Rational x = r.is_int ? Rational(static_cast<long>(t.int_value(r.slot)))
-                               : run.numeric() == Numeric::exact ? parse_rational(Json(t.num_text(r.slot)), q.var)
-                                                                 : num::to_rational(t.component_double(r, 0));
-            q.answer = sgn(x), q.answer_step = s;
+            const auto x = exact_value(run, t.var_at(v), 0);
+            if (!x) {
+              why = "'" + q.var + "' is not finite at step " + std::to_string(s);
+              return false;
+            }
+            q.answer = sgn(*x), q.answer_step = s;
             return true;
           }
       }
