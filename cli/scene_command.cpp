@@ -1,26 +1,92 @@
-// `stepwise scene check SCENE [--json]` (scene_command.hpp). The scene is read and validated in
-// full before anything is printed, so a bad scene prints only the error line.
+// `stepwise scene check|plan|render` (scene_command.hpp). The scene and every option are read and
+// validated in full before anything is printed or written, so bad input prints only the error line
+// and leaves no image.
 #include "scene_command.hpp"
+#include <unistd.h>
+#include <cstdio>
 #include <iostream>
+#include <regex>
+#include "png.hpp"
+#include "tracer/plan.hpp"
+#include "tracer/render.hpp"
 #include "tracer/scene.hpp"
 
 namespace sw::cli {
 
 void add_scene_commands(CLI::App& app, SceneCommands& c) {
-  c.group = app.add_subcommand("scene", "Ray-tracer scenes: check (render and plan come later)");
+  c.group = app.add_subcommand("scene", "Ray-tracer scenes: check, plan, render (docs/tracer/)");
   c.group->require_subcommand(1);
   c.check = c.group->add_subcommand("check", "Validate a scene file and print a summary (docs/tracer/scene-format.md)");
-  c.check->add_option("scene", c.check_file, "Scene file (JSON)")->required();
-  c.check->add_flag("--json", c.check_json, "Print the summary as one JSON object");
+  c.plan = c.group->add_subcommand("plan", "Print the effect plan: each effect on or off, and why (docs/tracer/planner.md)");
+  c.render = c.group->add_subcommand("render", "Render a scene to a PNG with the Whitted tracer (docs/tracer/renderer.md)");
+  for (CLI::App* sub : {c.check, c.plan, c.render}) sub->add_option("scene", c.file, "Scene file (JSON)")->required();
+  c.check->add_flag("--json", c.json, "Print the summary as one JSON object");
+  c.plan->add_flag("--json", c.json, "Print the plan as one JSON object");
+  c.render->add_option("--out", c.out, "The PNG to write")->required();
+  c.render->add_option("--size", c.size, "WxH instead of the scene's resolution (each 1..8192)");
+  c.render->add_option("--spp", c.spp, "Samples per pixel, a square 1..256, on a grid (jittered if the scene jitters)");
+  c.render->add_flag("--adaptive", c.adaptive, "Adaptive supersampling by neighbour contrast");
+  c.render->add_flag("--all-effects", c.all_effects, "Simulate every effect (the planner's reference)");
+  c.render->add_option("--threads", c.threads, "Threads (0: every core); the image does not depend on it")->check(CLI::Range(0u, 256u));
+  c.render->add_flag("--quiet", c.quiet, "No progress bar and no summary");
+  c.render->add_option("--offset", c.offset, "Secondary ray origins: robust (default), none or epsilon (the naive ones, for the acne lesson)")
+      ->check(CLI::IsMember({"robust", "none", "epsilon"}));
 }
+
+namespace {
+
+int render(const SceneCommands& c) {
+  const tracer::Scene s = tracer::read_scene_file(c.file);
+  tracer::RenderOptions o;
+  if (!c.size.empty()) {
+    std::smatch m;
+    if (!std::regex_match(c.size, m, std::regex("([0-9]{1,5})x([0-9]{1,5})")))
+      throw InputError("--size: expected WxH, e.g. 320x240, got '" + c.size.substr(0, 40) + "'");
+    o.width = std::stoll(m[1]), o.height = std::stoll(m[2]);
+    if (o.width < 1 || o.height < 1 || o.width > tracer::kMaxResolution || o.height > tracer::kMaxResolution)
+      throw InputError("--size: each side must be in [1, 8192], got " + c.size);
+  }
+  if (c.spp != 0) {
+    const auto n = static_cast<std::int64_t>(std::llround(std::sqrt(double(c.spp))));
+    if (c.spp < 1 || c.spp > 256 || n * n != c.spp) throw InputError("--spp: must be a square in [1, 256] (1, 4, 9, ..., 256), got " + std::to_string(c.spp));
+    if (c.adaptive) throw InputError("--spp and --adaptive exclude each other");
+    if (n * n > s.rays_per_pixel) throw InputError("--spp: " + std::to_string(c.spp) + " primary rays exceed the scene's rays_per_pixel " + std::to_string(s.rays_per_pixel));
+    o.spp = c.spp;
+  }
+  o.adaptive = c.adaptive, o.all_effects = c.all_effects, o.threads = c.threads;
+  o.offset = c.offset == "none" ? tracer::Offset::none : c.offset == "epsilon" ? tracer::Offset::epsilon : tracer::Offset::robust;
+  const bool bar = !c.quiet && isatty(STDERR_FILENO);
+  if (bar)
+    o.progress = [](double f) {
+      const int filled = static_cast<int>(f * 40);
+      std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(static_cast<std::size_t>(filled), '#').c_str(), std::string(static_cast<std::size_t>(40 - filled), ' ').c_str(),
+                   static_cast<int>(f * 100));
+      std::fflush(stderr);
+    };
+  const tracer::RenderResult r = tracer::render(s, o);
+  if (bar) std::fprintf(stderr, "\n");
+  const std::vector<std::uint8_t> rgb = tracer::to_rgb8(r);
+  write_png(c.out, rgb.data(), static_cast<int>(r.width), static_cast<int>(r.height), 3);
+  if (!c.quiet) std::cout << tracer::render_summary(r);
+  return 0;
+}
+
+}  // namespace
 
 int run_scene_commands(const SceneCommands& c) {
   if (*c.check) {
-    const tracer::Scene s = tracer::read_scene_file(c.check_file);
-    if (c.check_json) std::cout << tracer::scene_summary(s).dump() << '\n';
+    const tracer::Scene s = tracer::read_scene_file(c.file);
+    if (c.json) std::cout << tracer::scene_summary(s).dump() << '\n';
     else std::cout << tracer::scene_summary_text(s);
     return 0;
   }
+  if (*c.plan) {
+    const tracer::Plan p = tracer::plan_scene(tracer::read_scene_file(c.file));
+    if (c.json) std::cout << tracer::plan_json(p).dump() << '\n';
+    else std::cout << tracer::plan_text(p);
+    return 0;
+  }
+  if (*c.render) return render(c);
   return 2;
 }
 

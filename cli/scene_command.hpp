@@ -1,6 +1,5 @@
 // `stepwise scene ...`: the commands on one ray-tracer scene file (docs/tracer/scene-format.md).
-// `check` validates it and prints a summary; `render` and `plan` go beside it: each adds its
-// options and CLI::App* here, one block in add_scene_commands and one line in run_scene_commands.
+// `check` validates it and prints a summary; `plan` prints the effect plan; `render` renders it.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
@@ -10,9 +9,13 @@ namespace sw::cli {
 // main keeps this alive while parsing: the subcommands write their options into it.
 struct SceneCommands {
   CLI::App* group = nullptr;
-  CLI::App* check = nullptr;
-  std::string check_file;
-  bool check_json = false;
+  CLI::App *check = nullptr, *plan = nullptr, *render = nullptr;
+  std::string file;
+  bool json = false;
+  std::string out, size, offset = "robust";
+  std::int64_t spp = 0;
+  bool adaptive = false, all_effects = false, quiet = false;
+  unsigned threads = 0;
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

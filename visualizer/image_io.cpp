@@ -1,23 +1,10 @@
 #include "image_io.hpp"
 #include <gif_lib.h>
-#include <stb_image_write.h>
 #include <string>
 #include <vector>
 #include "trace_io.hpp"
 
 namespace sw::vis {
-
-void write_png(const std::filesystem::path& path, const std::uint8_t* rgba, int w, int h) {
-  AtomicFile file(path);
-  struct Sink {
-    std::ostream* out;
-  } sink{&file.stream()};
-  const int ok = stbi_write_png_to_func(
-      [](void* ctx, void* data, int size) { static_cast<Sink*>(ctx)->out->write(static_cast<const char*>(data), size); }, &sink,
-      w, h, 4, rgba, w * 4);
-  if (!ok) throw InputError("cannot encode PNG for " + path.string());
-  file.commit();
-}
 
 struct GifWriter::Impl {
   explicit Impl(const std::filesystem::path& p) : file(p), target(p) {}

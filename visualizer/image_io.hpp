@@ -1,14 +1,14 @@
-// Writing frames: PNG through stb_image_write, animated GIF through giflib. Both write to a
+// Writing frames: PNG (runtime/png.hpp), animated GIF through giflib. Both write to a
 // temporary file renamed into place on success, so a failure leaves no partial file.
 #pragma once
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include "png.hpp"
 
 namespace sw::vis {
 
-// rgba: top-down rows of w*4 bytes. Throws InputError when the file cannot be written.
-void write_png(const std::filesystem::path& path, const std::uint8_t* rgba, int w, int h);
+// PNG: sw::write_png (runtime/png.hpp).
 
 class GifWriter {
  public:

@@ -38,11 +38,13 @@ template <class Num> struct ShadeScene {
   std::vector<Light<Num>> lights;
   Material<Num> material;
   Convention convention = Convention::gl;
+  std::uint32_t blocked = 0;     // bit i: a shadow ray found light i occluded (the ray tracer): no diffuse or specular from it
 };
 
 template <class Num> struct LightTerms {
   bool at_point = false;  // the light sits at the shading point: it adds nothing
   bool lit = false;       // n.l > 0, decided on the raw vectors
+  bool blocked = false;   // occluded (ShadeScene::blocked): lit, but only its ambient term is added
   bool inside = true;     // inside the spot cone (always, for other lights)
   Num attenuation{0}, spot{0}, diffuse{0}, specular{0};
   Vec3<Num> rgb;          // what the light adds
@@ -65,6 +67,7 @@ struct Shade {
   X(to_light, "    L <- position - P (point, spot), or the direction (directional)")                                \
   X(at_point, "    if L = 0: the light sits at P: it adds nothing; next light")                                      \
   X(facing, "    lit <- N.L > 0                                        -- the raw vectors: exact in reference mode") \
+  X(blocked, "    if a shadow ray found light i occluded: diff <- 0, spec <- 0 (it adds its ambient term only)") \
   X(unit, "    m <- max |L_k|; d <- m |L/m|; l <- (L/m)/|L/m|          -- no overflow or underflow")                                                                                 \
   X(atten, "    att <- 1/(k0 + k1 d + k2 d^2)   (directional: 1)")                                                   \
   X(cone, "    spot: D <- -L/m, S <- S/max|S_k|; inside <- D.S >= 0 and (D.S)^2 >= cos^2(cut-off) |D|^2 |S|^2; spot <- inside ? (D.S/(|D||S|))^exponent : 0") \
@@ -126,6 +129,8 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
     }
     t.lit = sign_dot(s.n, to_light) > 0;
     if constexpr (Probe::on) probe.step(L::facing, StepKind::decide).num("NL", dot(s.n, to_light)).idx("lit", t.lit);
+    t.blocked = (s.blocked >> i) & 1u;
+    if constexpr (Probe::on) if (t.blocked && t.lit) probe.step(L::blocked, StepKind::miss).idx("i", std::int64_t(i));
     const Num scale = max_abs(to_light);
     const Vec3<Num> lm = prescaled(to_light);
     const Num dm = num::sqrt_of(dot(lm, lm)), d = Num(scale * dm), d2 = Num(d * d);
@@ -143,7 +148,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
         probe.step(L::cone, StepKind::decide).num("DS", ds).num("q", q).idx("inside", t.inside).num("spot", t.spot)
             .ray(li.where, li.spot_dir).label("S");
     }
-    if (t.lit) {
+    if (t.lit && !t.blocked) {
       const FrameSigns sg = frame_signs(s.n, to_light, to_eye);
       const Frame<Num> f{n, l, e, dot(n, l), dot(n, e), sg.lit, sg.seen, sg.mirror};
       if (s.convention == Convention::gl) {

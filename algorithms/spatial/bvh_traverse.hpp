@@ -24,6 +24,7 @@ template <class Num> using BvhHit = TreeHit<Num>;
 template <class Num> struct BvhQuery {
   bool any = false;
   Num t_max{};
+  std::int32_t skip = -1;  // the triangle a secondary ray leaves: a ray cannot meet its own plane again
 };
 
 struct BvhTraverse {
@@ -34,7 +35,7 @@ struct BvhTraverse {
   X(root, "test the root's box with ray-box; a miss: no hit; else push (root, t_entry)") \
   X(pop, "while the stack is not empty: pop (node, t_entry)") \
   X(prune, "    if t_entry > t_best (any hit: t_entry >= t_max): skip it   -- entering at t_best may still find a lower id") \
-  X(test, "    if a leaf: for each triangle i: test it with ray-triangle-watertight") \
+  X(test, "    if a leaf: for each triangle i but the one the ray leaves: test it with ray-triangle-watertight") \
   X(keep, "        if it is hit and (t, i) < (t_best, i_best): best <- (t, i)") \
   X(stop, "        any hit: if it is hit with t < t_max: stop with it") \
   X(boxes, "    else: test both children's boxes with ray-box") \
@@ -104,6 +105,7 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
     if (nd.left < 0) {
       for (std::int32_t j = nd.first; j < nd.first + nd.count; ++j) {
         const std::int32_t i = bvh.order[j];
+        if (i == q.skip) continue;
         if constexpr (Probe::on) {
           probe.step(L::test, StepKind::visit).idx("prim", i);
           probe.enter(ray::RayTriangleWatertight::id, ray::RayTriangleWatertight::listing());

@@ -113,6 +113,14 @@ void parse_scene_rest(const Json& j, const std::string& what, ShadeScene<Rationa
   if (!ls.is_array()) throw InputError(what + ".lights: expected an array of lights");
   if (ls.size() > kMaxLights) throw InputError(what + ".lights: at most 8 lights (OpenGL's guaranteed number)");
   for (std::size_t i = 0; i < ls.size(); ++i) s.lights.push_back(parse_light(ls[i], what + ".lights[" + std::to_string(i) + "]"));
+  if (j.contains("blocked")) {  // the lights a ray tracer's shadow rays found occluded
+    const Json& b = j["blocked"];
+    if (!b.is_array()) throw InputError(what + ".blocked: expected an array of light indices");
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const std::int64_t i = parse_integer(b[k], what + ".blocked[" + std::to_string(k) + "]", 0, std::int64_t(ls.size()) - 1);
+      s.blocked |= 1u << i;
+    }
+  }
   const Json& m = require(j, "material", what);
   const std::string mw = what + ".material";
   if (!m.is_object()) throw InputError(mw + ": expected an object");
@@ -150,7 +158,7 @@ void parse_scene_rest(const Json& j, const std::string& what, ShadeScene<Rationa
 
 ShadeScene<Rational> parse_scene(const Json& j, const std::string& what) {
   if (!j.is_object()) throw InputError(what + ": expected an object");
-  only_keys_optional(j, {"p", "n", "lights", "material"}, {"eye", "eye_direction", "ambient", "convention"}, what);
+  only_keys_optional(j, {"p", "n", "lights", "material"}, {"eye", "eye_direction", "ambient", "convention", "blocked"}, what);
   ShadeScene<Rational> s;
   s.p = vec3(j["p"], what + ".p");
   s.n = nonzero(j["n"], what + ".n");

@@ -39,6 +39,7 @@ template <class Num> ShadeScene<Num> convert_scene(const ShadeScene<Rational>& s
   o.eye_at_infinity = s.eye_at_infinity;
   o.scene_ambient = to_num3<Num>(s.scene_ambient);
   o.convention = s.convention;
+  o.blocked = s.blocked;
   const Material<Rational>& m = s.material;
   o.material.emission = to_num3<Num>(m.emission), o.material.ka = to_num3<Num>(m.ka);
   o.material.kd = to_num3<Num>(m.kd), o.material.ks = to_num3<Num>(m.ks);

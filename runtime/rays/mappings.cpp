@@ -20,6 +20,8 @@ using rays::kCoordBound;
 struct CameraInput {
   Vec3<Rational> eye, vpn, vup;
   Rational dist, fov_deg;
+  bool has_window = false;
+  std::array<Rational, 4> window;  // umin, umax, vmin, vmax (perspective only)
   std::int64_t w = 1, h = 1, i = 0, j = 0;
   ray::Projection projection = ray::Projection::perspective;
 };
@@ -29,12 +31,26 @@ CameraInput parse_camera(const Json& j) {
   only_keys(j, {"camera", "pixel", "size", "projection"}, "input");
   CameraInput in;
   const Json& c = j["camera"];
-  only_keys(c, {"eye", "vpn", "vup", "d", "fov"}, "input.camera");
+  only_keys_optional(c, {"eye", "vpn", "vup", "d"}, {"fov", "window"}, "input.camera");
+  if (c.contains("fov") == c.contains("window")) throw InputError("input.camera: give exactly one of \"fov\" and \"window\" [umin, umax, vmin, vmax]");
   in.eye = point3(c["eye"], "input.camera.eye");
   in.vpn = point3(c["vpn"], "input.camera.vpn");
   in.vup = point3(c["vup"], "input.camera.vup");
   in.dist = parse_rational(c["d"], "input.camera.d");
-  in.fov_deg = parse_rational(c["fov"], "input.camera.fov");
+  if (c.contains("window")) {
+    const Json& w = c["window"];
+    if (!w.is_array() || w.size() != 4) throw InputError("input.camera.window: expected [umin, umax, vmin, vmax]");
+    in.has_window = true;
+    for (std::size_t k = 0; k < 4; ++k) {
+      in.window[k] = parse_rational(w[k], "input.camera.window[" + std::to_string(k) + "]");
+      if (abs(in.window[k]) > Rational(kCoordBound)) throw InputError("input.camera.window[" + std::to_string(k) + "]: must be within 1e15");
+    }
+    if (in.window[0] >= in.window[1]) throw InputError("input.camera.window: umin must be < umax");
+    if (in.window[2] >= in.window[3]) throw InputError("input.camera.window: vmin must be < vmax");
+    in.fov_deg = 60;  // unused
+  } else {
+    in.fov_deg = parse_rational(c["fov"], "input.camera.fov");
+  }
   const Vec3<Rational> side = cross(in.vup, in.vpn);
   if (sgn(in.vpn.x) == 0 && sgn(in.vpn.y) == 0 && sgn(in.vpn.z) == 0) throw InputError("input.camera.vpn: the view-plane normal is zero");
   if (sgn(side.x) == 0 && sgn(side.y) == 0 && sgn(side.z) == 0) throw InputError("input.camera.vup: parallel to vpn (or zero)");
@@ -47,6 +63,7 @@ CameraInput parse_camera(const Json& j) {
   else if (ps == "cylindrical") in.projection = ray::Projection::cylindrical;
   else throw InputError("input.projection: unknown projection '" + ps + "' (perspective, fisheye, cylindrical)");
   const Rational max_fov = in.projection == ray::Projection::fisheye ? 360 : 179;
+  if (in.has_window && in.projection != ray::Projection::perspective) throw InputError("input.camera.window: a window needs the perspective projection");
   if (sgn(in.fov_deg) <= 0 || in.fov_deg > max_fov) throw InputError("input.camera.fov: degrees in (0, " + max_fov.get_str() + "] for " + ps);
   const Json& size = j["size"];
   const Json& px = j["pixel"];
@@ -110,6 +127,8 @@ struct CameraSpec {
     ray::Camera<Num> c{to_num<Num>(in.eye), to_num<Num>(in.vpn), to_num<Num>(in.vup), num::from_rational<Num>(in.dist), Num(0), in.w, in.h, in.projection};
     if constexpr (std::is_same_v<Num, Rational>) c.fov = in.fov_deg * num::pi<Rational>() / 180;
     else c.fov = Num(num::from_rational<Num>(in.fov_deg) * Num(3.14159265358979323846 / 180));
+    c.has_window = in.has_window;
+    for (std::size_t k = 0; k < 4; ++k) c.window[k] = num::from_rational<Num>(in.window[k]);
     return {c, in.i, in.j};
   }
   template <class Num, class Probe> static Output compute(const Prepared<Num>& p, Probe& probe) {

@@ -14,6 +14,8 @@
 #include "lighting/shade.hpp"
 #include "rays/camera_ray.hpp"
 #include "spatial/spatial_common.hpp"
+#include "tracer/texture.hpp"
+#include "tracer/trace_scene.hpp"
 
 namespace sw::tracer {
 
@@ -47,7 +49,7 @@ struct Camera {
   std::int64_t width = 1, height = 1;
 };
 
-enum class ObjectKind : std::uint8_t { sphere, plane, box, triangle, mesh };
+using ObjectKind = Shape;  // the renderer's object kinds (tracer/trace_scene.hpp)
 std::string_view kind_name(ObjectKind k);
 
 struct Object {
@@ -69,7 +71,6 @@ struct MeshFile {
   std::size_t first_object = 0;  // the first object naming it (errors point there)
 };
 
-enum class TextureKind : std::uint8_t { checker, image, marble, wood };
 std::string_view kind_name(TextureKind k);
 
 struct Texture {

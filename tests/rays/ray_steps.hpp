@@ -296,8 +296,12 @@ inline CameraCase camera_of(const Json& in) {
   CameraCase c;
   const Json& j = in["camera"];
   c.cam.eye = parse_point3(j, "eye"), c.cam.vpn = parse_point3(j, "vpn"), c.cam.vup = parse_point3(j, "vup");
-  c.cam.dist = q(j["d"]), c.fov_deg = q(j["fov"]);
+  c.cam.dist = q(j["d"]), c.fov_deg = j.contains("fov") ? q(j["fov"]) : Q(60);
   c.cam.fov = c.fov_deg * num::pi<Q>() / 180;
+  if (j.contains("window")) {
+    c.cam.has_window = true;
+    for (std::size_t k = 0; k < 4; ++k) c.cam.window[k] = q(j["window"][k]);
+  }
   c.cam.width = in["size"][0].get<std::int64_t>(), c.cam.height = in["size"][1].get<std::int64_t>();
   c.i = in["pixel"][0].get<std::int64_t>(), c.j = in["pixel"][1].get<std::int64_t>();
   const std::string proj = in["projection"];

@@ -33,7 +33,7 @@ bool camera_expected(const Json& in, Expected& e) {
   using L = ray::CameraRayAlgo;
   const Json& cj = in["camera"];
   const V3 eye = parse_point3(cj, "eye"), vpn = parse_point3(cj, "vpn"), vup = parse_point3(cj, "vup");
-  const Val d(q(cj["d"])), fov = Val(q(cj["fov"])) * pi_val() / Val(180);
+  const Val d(q(cj["d"])), fov = Val(cj.contains("fov") ? q(cj["fov"]) : Q(60)) * pi_val() / Val(180);
   const Q w = in["size"][0].get<int>(), h = in["size"][1].get<int>();
   const std::int64_t i = in["pixel"][0].get<std::int64_t>(), j = in["pixel"][1].get<std::int64_t>();
   const V3 side = crossq(vup, vpn);
@@ -63,7 +63,12 @@ bool camera_expected(const Json& in, Expected& e) {
   const Val half_fov = fov / Val(2);
   VV dir;
   const std::string proj = in["projection"];
-  if (proj == "perspective") {
+  if (cj.contains("window")) {  // the window's point (umin + (sx+1)/2 (umax-umin), vmin + (sy+1)/2 (vmax-vmin))
+    const Json& wj = cj["window"];
+    const Q wu = q(wj[0]) + (sx + 1) / 2 * (q(wj[1]) - q(wj[0])), wv = q(wj[2]) + (sy + 1) / 2 * (q(wj[3]) - q(wj[2]));
+    dir = scaled(n, -d) + scaled(u, Val(wu)) + scaled(v, Val(wv));
+    e.step(L::given, K::advance).var("wu", wu).var("wv", wv).point(e0 + dir).label("P1").keep();
+  } else if (proj == "perspective") {
     const Val hh = d * tan_val(half_fov), hw = hh * Val(Q(w / h));
     e.step(L::window, K::init).var("hh", hh).var("hw", hw);
     dir = scaled(n, -d) + scaled(u, Val(sx) * hw) + scaled(v, Val(sy) * hh);
@@ -140,11 +145,16 @@ std::vector<Case> camera_cases(int count, std::uint64_t seed) {
     const int proj = g.pick(0, 2), w = g.pick(1, 9), h = g.pick(1, 9);
     const Json fov = g.one_in(6) ? Json("45/2") : Json(proj == 1 ? g.pick(1, 360) : g.pick(1, 179));
     auto js = [](const V3& x) { return Json::array({x.x.get_str(), x.y.get_str(), x.z.get_str()}); };
-    const Json cam = {{"eye", g.vec(-3, 3)},
-                      {"vpn", js(vpn)},
-                      {"vup", js(vup)},
-                      {"d", std::array{"1", "2", "1/2", "3/2"}[g.pick(0, 3)]},
-                      {"fov", fov}};
+    Json cam = {{"eye", g.vec(-3, 3)},
+                {"vpn", js(vpn)},
+                {"vup", js(vup)},
+                {"d", std::array{"1", "2", "1/2", "3/2"}[g.pick(0, 3)]},
+                {"fov", fov}};
+    if (proj == 0 && g.one_in(3)) {  // the notes' window, possibly off-centre
+      const int u0 = g.pick(-3, 1), v0 = g.pick(-3, 1);
+      cam.erase("fov");
+      cam["window"] = {u0, u0 + g.pick(1, 4), std::to_string(v0) + "/2", std::to_string(v0 + 2 * g.pick(1, 3)) + "/2"};
+    }
     out.push_back({"small " + std::to_string(k),
                    {{"camera", cam},
                     {"pixel", {g.pick(0, w - 1), g.pick(0, h - 1)}},

@@ -1,0 +1,233 @@
+// Whitted's recursive ray tracer over a TraceScene: the closest hit (scene-hit), the surface and
+// its texture, a shadow ray per light that faces the point, the local lighting of the lighting
+// family (shade, `models` convention, blocked lights adding their ambient term only), then a
+// mirror ray and a transmitted ray weighted by kr, kt and Fresnel's split (refract).
+// Which effects run is the EffectPlan's: the planner's (docs/tracer/planner.md) or all of them.
+// A skipped effect adds exactly what the full computation would: a skipped ray has weight 0, or
+// the planner proved its outcome. Recursion stops at max_depth, and a pixel's rays of non-zero
+// weight stop at its budget (a ray of weight 0 costs no budget, so both plans spend it alike).
+// Semantics: docs/tracer/renderer.md.
+#pragma once
+#include <cstdint>
+#include <string_view>
+#include <vector>
+#include "lighting/shade.hpp"
+#include "rays/camera_ray.hpp"
+#include "tracer/refraction.hpp"
+#include "tracer/surface.hpp"
+#include "tracer/texture.hpp"
+
+namespace sw::tracer {
+
+template <class Num> struct TraceMaterial {
+  lighting::Material<Num> shading;
+  Num kr{}, kt{}, ior{1.5};
+  int texture = -1;
+  TraceBump bump;
+};
+
+// Where a secondary ray starts. robust: offset by the hit point's error bound, and the flat surface
+// left behind is not tested (surface.hpp, trace_scene.hpp); none: at the computed point, every
+// surface tested; epsilon: the classic fixed 1e-4 along the normal. The last two are the naive
+// variants a lesson shows failing (shadow acne, and a light leak when the epsilon is too large).
+enum class Offset : std::uint8_t { robust, none, epsilon };
+
+template <class Num> struct TraceScene : TraceObjects<Num> {
+  ray::Camera<Num> camera;
+  std::vector<TraceMaterial<Num>> materials;
+  std::vector<TraceTexture> textures;
+  std::vector<lighting::Light<Num>> lights;
+  Vec3<Num> background, ambient;
+  int max_depth = 5;
+  std::int64_t budget = 1024;  // a pixel's rays of non-zero weight
+  Offset offset = Offset::robust;
+};
+
+// What to simulate. `shadows` per light, `reflection` and `refraction` per material.
+struct EffectPlan {
+  std::vector<char> shadows, reflection, refraction;
+  static EffectPlan all(std::size_t lights, std::size_t materials) { return {std::vector<char>(lights, 1), std::vector<char>(materials, 1), std::vector<char>(materials, 1)}; }
+};
+
+struct RayCounts {
+  std::uint64_t primary = 0, shadow = 0, reflection = 0, refraction = 0, photon = 0;
+  std::uint64_t shadow_blocked = 0;  // shadow rays that found an occluder
+  std::uint64_t budget_stops = 0;    // secondary rays not cast because their pixel's budget was spent
+  RayCounts& operator+=(const RayCounts& o) {
+    primary += o.primary, shadow += o.shadow, shadow_blocked += o.shadow_blocked, reflection += o.reflection, refraction += o.refraction, photon += o.photon, budget_stops += o.budget_stops;
+    return *this;
+  }
+  std::uint64_t total() const { return primary + shadow + reflection + refraction + photon; }
+};
+
+struct Whitted {
+  static constexpr std::string_view id = "whitted";
+  static constexpr std::string_view summary = "Whitted ray tracing: closest hit, shadow rays, local lighting, mirror and transmitted rays, as planned";
+#define SW_TRACER_WHITTED(X) \
+  X(closest, "hit <- the ray's closest hit (scene-hit)") \
+  X(background, "if none: return the background colour") \
+  X(surface, "P, its error box, N <- the surface at the hit; N faces the ray; (u, v)") \
+  X(texture, "kd, ka <- the texture at (u, v) or at P; N <- N tilted by the bump map") \
+  X(shadow, "for each light i with N.L > 0, if its shadows are planned: blocked_i <- any hit from P (offset) before the light") \
+  X(local, "c <- shade(P, N, eye = the ray's origin), blocked lights adding their ambient term only") \
+  X(deep, "if depth = max_depth: return c") \
+  X(split, "if refraction is planned: TIR, T, F <- refract(d, N, n1, n2); else F <- 0") \
+  X(reflect, "wr <- kr + kt F; if reflection is planned: c <- c + wr trace(the mirror ray from P, depth + 1)") \
+  X(transmit, "wt <- kt (1 - F); if refraction is planned and not TIR: c <- c + wt trace(T from P, depth + 1)") \
+  X(budget, "    a ray of weight > 0 is cast only while the pixel's budget lasts") \
+  X(done, "return c")
+  SW_LISTING("Whitted ray tracer", SW_TRACER_WHITTED)
+#undef SW_TRACER_WHITTED
+};
+
+// One pixel's tracer (construct one per pixel: the budget is the pixel's).
+template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
+ public:
+  WhittedTracer(const TraceScene<Num>& s, const EffectPlan& plan, RayCounts& counts, Probe& probe)
+      : s_(s), plan_(plan), counts_(counts), probe_(probe), budget_(s.budget) {
+    shading_.lights = s.lights;
+    shading_.scene_ambient = s.ambient;
+    shading_.convention = lighting::Convention::models;
+  }
+
+  // The colour seen through image point (i + di, j + dj); a fisheye's point outside its circle
+  // sees the background.
+  Vec3<Num> sample(std::int64_t i, std::int64_t j, const Num& di, const Num& dj) {
+    if constexpr (Probe::on) probe_.enter(ray::CameraRayAlgo::id, ray::CameraRayAlgo::listing());
+    const ray::CameraRay<Num> cr = ray::camera_ray_at(s_.camera, i, j, di, dj, probe_);
+    if constexpr (Probe::on) probe_.leave();
+    if (!cr.valid) return s_.background;
+    ++counts_.primary;
+    --budget_;
+    return trace(cr.ray, 1, Num(1), Leaving{});
+  }
+
+  Vec3<Num> trace(const ray::Ray3<Num>& r, int depth, const Num& weight, const Leaving& from) {
+    using L = Whitted;
+    if constexpr (Probe::on) probe_.enter(SceneHit::id, SceneHit::listing());
+    const Hit<Num> h = scene_hit(s_, r, false, Num(0), from, probe_);
+    if constexpr (Probe::on) {
+      probe_.leave();
+      probe_.step(L::closest, h.hit ? StepKind::hit : StepKind::miss).idx("depth", depth).num("weight", weight).idx("object", h.object).num("t", h.t).ray(r.o, r.d).keep();
+    }
+    if (!h.hit) {
+      if constexpr (Probe::on) probe_.step(L::background, StepKind::done).colour("c", s_.background);
+      return s_.background;
+    }
+    const Prim<Num>& obj = s_.objects[static_cast<std::size_t>(h.object)];
+    const TraceMaterial<Num>& m = s_.materials[static_cast<std::size_t>(obj.material)];
+    const Surface<Num> sf = surface_at(s_, r, h);
+    const bool entering = dot(r.d, sf.n) < Num(0);  // the ray meets the front (outside)
+    const Vec3<Num> nf = entering ? sf.n : Num(-1) * sf.n;
+    if constexpr (Probe::on)
+      probe_.step(L::surface, StepKind::init).vec("P", sf.p).vec("err", sf.err).vec("N", nf).num("u", sf.u).num("v", sf.v).idx("entering", entering)
+          .point(sf.p).label("P").keep().segment(sf.p, Vec3<Num>(sf.p + nf)).label("N").keep();
+    lighting::Material<Num> mat = m.shading;
+    if (m.texture >= 0) {
+      const Vec3<Num> tc = texture_colour(s_.textures[static_cast<std::size_t>(m.texture)], sf.u, sf.v, sf.p);
+      mat.kd = tc, mat.ka = tc;
+    }
+    const Vec3<Num> ns = m.bump.on ? bumped(m.bump, nf, sf.p) : nf;
+    if constexpr (Probe::on) if (m.texture >= 0 || m.bump.on) probe_.step(L::texture, StepKind::init).colour("kd", mat.kd).vec("Ns", ns);
+    const Leaving here = s_.offset == Offset::robust ? Leaving{h.object, h.prim} : Leaving{};
+    shading_.blocked = shadows(sf, ns, here);
+    shading_.p = sf.p, shading_.n = ns, shading_.eye = r.o, shading_.material = mat;
+    if constexpr (Probe::on) probe_.enter(lighting::Shade::id, lighting::Shade::listing());
+    Vec3<Num> c = lighting::shade(shading_, probe_).rgb;
+    if constexpr (Probe::on) {
+      probe_.leave();
+      probe_.step(L::local, StepKind::init).colour("c", c);
+    }
+    if (depth >= s_.max_depth) {
+      if constexpr (Probe::on) probe_.step(L::deep, StepKind::done).colour("c", c);
+      return c;
+    }
+    const std::size_t mi = static_cast<std::size_t>(obj.material);
+    Transmission<Num> tr;
+    tr.fresnel = Num(0), tr.tir = true;
+    if (plan_.refraction[mi]) {
+      const Num n1 = entering ? Num(1) : m.ior, n2 = entering ? m.ior : Num(1);
+      if constexpr (Probe::on) probe_.enter(Refract::id, Refract::listing());
+      tr = refract(r.d, ns, n1, n2, m.shading.params.fresnel, probe_);
+      if constexpr (Probe::on) {
+        probe_.leave();
+        probe_.step(L::split, StepKind::decide).idx("tir", tr.tir).num("F", tr.fresnel);
+      }
+    }
+    const Num wr = Num(m.kr + m.kt * tr.fresnel), wt = Num(m.kt * Num(Num(1) - tr.fresnel));
+    if (plan_.reflection[mi]) {
+      const Vec3<Num> dir = r.d - Num(Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
+      if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror").keep();
+      add(c, wr, weight, sf, here, dir, depth, counts_.reflection);
+    }
+    if (plan_.refraction[mi] && !tr.tir) {
+      if constexpr (Probe::on) probe_.step(L::transmit, StepKind::advance).num("wt", wt).ray(sf.p, tr.dir).label("T").keep();
+      add(c, wt, weight, sf, here, tr.dir, depth, counts_.refraction);
+    }
+    if constexpr (Probe::on) probe_.step(L::done, StepKind::done).colour("c", c);
+    return c;
+  }
+
+  bool budget_spent() const { return budget_ <= 0; }
+
+ private:
+  // Bit i set: light i faces P (N.L > 0), its shadows are planned, and a ray towards it is blocked.
+  std::uint32_t shadows(const Surface<Num>& sf, const Vec3<Num>& ns, const Leaving& here) {
+    using L = Whitted;
+    std::uint32_t blocked = 0;
+    for (std::size_t i = 0; i < s_.lights.size(); ++i) {
+      const lighting::Light<Num>& li = s_.lights[i];
+      const bool positional = li.type != lighting::LightType::directional;
+      const Vec3<Num> to_light = positional ? Vec3<Num>(li.where - sf.p) : li.where;
+      if (!plan_.shadows[i] || to_light == Vec3<Num>{} || lighting::sign_dot(ns, to_light) <= 0) continue;
+      const Vec3<Num> o = origin(sf, to_light);
+      const ray::Ray3<Num> sr{o, positional ? Vec3<Num>(li.where - o) : li.where};
+      ++counts_.shadow;
+      if constexpr (Probe::on) probe_.enter(SceneHit::id, SceneHit::listing());
+      const bool hit = scene_hit(s_, sr, true, positional ? Num(1) : std::numeric_limits<Num>::infinity(), here, probe_).hit;
+      if constexpr (Probe::on) {
+        probe_.leave();
+        probe_.step(L::shadow, hit ? StepKind::hit : StepKind::miss).idx("i", std::int64_t(i)).idx("blocked", hit).ray(sr.o, sr.d).label(hit ? "blocked" : "lit").keep();
+      }
+      if (hit) blocked |= 1u << i, ++counts_.shadow_blocked;
+    }
+    return blocked;
+  }
+
+  // c <- c + w trace(the ray from the surface in direction dir): a ray of weight 0 is traced (it
+  // was planned) but adds nothing and costs no budget.
+  void add(Vec3<Num>& c, const Num& w, const Num& weight, const Surface<Num>& sf, const Leaving& here, const Vec3<Num>& dir, int depth, std::uint64_t& count) {
+    const Num path = Num(weight * w);
+    if (path > Num(0)) {
+      if (budget_ <= 0) {
+        ++counts_.budget_stops;
+        if constexpr (Probe::on) probe_.step(Whitted::budget, StepKind::miss).idx("budget", budget_);
+        return;
+      }
+      --budget_;
+    }
+    ++count;
+    if constexpr (Probe::on) probe_.enter(Whitted::id, Whitted::listing());
+    const Vec3<Num> sub = trace({origin(sf, dir), dir}, depth + 1, path, here);
+    if constexpr (Probe::on) probe_.leave();
+    if (w > Num(0)) c = c + w * sub;
+  }
+
+  Vec3<Num> origin(const Surface<Num>& sf, const Vec3<Num>& dir) const {
+    switch (s_.offset) {
+      case Offset::robust: return offset_origin(sf, dir);
+      case Offset::none: return sf.p;
+      case Offset::epsilon: return sf.p + Num(dot(dir, sf.n) < Num(0) ? -1e-4 : 1e-4) * sf.n;
+    }
+    return sf.p;
+  }
+
+  const TraceScene<Num>& s_;
+  const EffectPlan& plan_;
+  RayCounts& counts_;
+  Probe& probe_;
+  std::int64_t budget_;
+  lighting::ShadeScene<Num> shading_;
+};
+
+}  // namespace sw::tracer

@@ -1,0 +1,44 @@
+// Rendering a scene with the Whitted tracer (algorithms/tracer/whitted.hpp): the scene converted to
+// doubles (meshes placed and put in a BVH, image textures decoded), the pixels traced on all cores
+// in any order, each from its own sample positions and its own budget, so the image does not
+// depend on the thread count. Semantics: docs/tracer/renderer.md.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+#include "tracer/plan.hpp"
+#include "tracer/scene.hpp"
+#include "tracer/whitted.hpp"
+
+namespace sw::tracer {
+
+struct RenderOptions {
+  std::int64_t width = 0, height = 0;  // 0: the scene's resolution
+  std::int64_t spp = 0;                // > 0: spp samples a pixel on a sqrt(spp)^2 grid (regular, or the scene's jitter)
+  bool adaptive = false;               // the scene's adaptive settings, or threshold 1/16 and max_n 4
+  bool all_effects = false;            // simulate every effect (the planner's reference)
+  unsigned threads = 0;                // 0: every core
+  Offset offset = Offset::robust;      // naive offsets, for the lessons on acne
+  std::function<void(double)> progress;  // called with the fraction done, from the calling thread
+};
+
+struct RenderResult {
+  std::int64_t width = 0, height = 0;
+  std::vector<Vec3<double>> rgb;  // row 0 at the top; not clamped
+  RayCounts counts;
+  std::uint64_t budget_pixels = 0;   // pixels whose budget stopped a ray
+  std::uint64_t refined_pixels = 0;  // adaptive: pixels that took more than one sample
+  double seconds = 0;
+  Plan plan;
+};
+
+TraceScene<double> trace_scene(const Scene& s, std::int64_t width, std::int64_t height);
+RenderResult render(const Scene& s, const RenderOptions& opt);
+
+// Colours clamped to [0, 1] and rounded to 8 bits, RGB rows.
+std::vector<std::uint8_t> to_rgb8(const RenderResult& r);
+// "rays: 123 primary, ..." and the time: what `scene render` prints at the end.
+std::string render_summary(const RenderResult& r);
+
+}  // namespace sw::tracer
