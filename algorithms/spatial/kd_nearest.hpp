@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -26,10 +27,10 @@ struct KdNearest {
   X(build, "build the kd-tree over the points with kd-build") \
   X(push, "push (root, d2 of q to the root cell)   -- d2 to a cell: the sum over axes of (the gap outside [lo_k, hi_k])^2") \
   X(pop, "while the stack is not empty: pop (node, d2_cell)") \
-  X(prune, "    if k are held and d2_cell > the largest held d2: skip the node   -- equal may still tie by id") \
+  X(prune, "    if d2_cell > r^2, or k are held and d2_cell > the largest held d2: skip the node   -- equal may still tie by id") \
   X(children, "    inner, plane x_k = p: push the far child, then the near one (q's side; left if q_k = p), each with its cell's d2") \
   X(point, "    leaf: for each point i: d2 <- |p_i - q|^2") \
-  X(take, "        if fewer than k are held or (d2, i) < the largest held: hold (d2, i), dropping the largest beyond k") \
+  X(take, "        if d2 <= r^2 and (fewer than k are held or (d2, i) < the largest held): hold (d2, i), dropping the largest beyond k") \
   X(done, "the held points, sorted by (d2, id)")
   SW_LISTING("kd-tree k nearest", SW_LINES_KD_NEAREST)
 #undef SW_LINES_KD_NEAREST
@@ -53,8 +54,10 @@ template <class Num, int D> Num kd_point_d2(const VecN<Num, D>& p, const VecN<Nu
 
 // The search over a built tree (kd_nearest below builds it first). Precondition: the tree is
 // kd_build's over these points; 1 <= k <= pts.size().
+// r2, if given, bounds the search: only points with d2 <= r2 are held (the photon map's radius).
 template <NumberType Num, int D, StepProbe Probe = NoProbe>
-KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vector<VecN<Num, D>>& pts, const VecN<Num, D>& q, std::size_t k, Probe& probe) {
+KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vector<VecN<Num, D>>& pts, const VecN<Num, D>& q, std::size_t k, Probe& probe,
+                                     const std::optional<Num>& r2 = std::nullopt) {
   using L = KdNearest;
   using Held = std::pair<Num, std::int32_t>;
   // (d2, id) order; the heap's front is the largest held.
@@ -82,9 +85,12 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
       auto& s = probe.step(L::pop, StepKind::visit).idx("node", e.node).num("d2_cell", e.d2).node(e.node, nd.parent, nd.cell.lo, nd.cell.hi);
       record_stack(s, stack);
     }
-    if (heap.size() == k) {
-      const bool skip = heap.front().first < e.d2;
-      if constexpr (Probe::on) probe.step(L::prune, StepKind::decide).num("worst", heap.front().first).idx("skip", skip);
+    if (heap.size() == k || r2) {
+      const bool skip = (r2 && *r2 < e.d2) || (heap.size() == k && heap.front().first < e.d2);
+      if constexpr (Probe::on) {
+        auto& st = probe.step(L::prune, StepKind::decide).idx("skip", skip);
+        if (heap.size() == k) st.num("worst", heap.front().first);
+      }
       if (skip) continue;
     }
     if (nd.left >= 0) {
@@ -101,7 +107,7 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
       ++out.dist_tests;
       if constexpr (Probe::on) probe.step(L::point, StepKind::visit).idx("i", i).num("d2", d2).point(pts[i]).segment(pts[i], q).value(d2);
       const Held h{d2, i};
-      if (heap.size() < k || less(h, heap.front())) {
+      if ((!r2 || !(*r2 < d2)) && (heap.size() < k || less(h, heap.front()))) {
         if (heap.size() == k) std::pop_heap(heap.begin(), heap.end(), less), heap.pop_back();
         heap.push_back(h);
         std::push_heap(heap.begin(), heap.end(), less);

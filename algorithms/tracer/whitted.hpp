@@ -13,6 +13,7 @@
 #include <vector>
 #include "lighting/shade.hpp"
 #include "rays/camera_ray.hpp"
+#include "tracer/photon_map.hpp"
 #include "tracer/refraction.hpp"
 #include "tracer/surface.hpp"
 #include "tracer/texture.hpp"
@@ -41,12 +42,17 @@ template <class Num> struct TraceScene : TraceObjects<Num> {
   int max_depth = 5;
   std::int64_t budget = 1024;  // a pixel's rays of non-zero weight
   Offset offset = Offset::robust;
+  const PhotonMap* caustics = nullptr;  // photon_trace.hpp; none: no caustic term
 };
 
 // What to simulate. `shadows` per light, `reflection` and `refraction` per material.
 struct EffectPlan {
   std::vector<char> shadows, reflection, refraction;
-  static EffectPlan all(std::size_t lights, std::size_t materials) { return {std::vector<char>(lights, 1), std::vector<char>(materials, 1), std::vector<char>(materials, 1)}; }
+  bool caustics = true;
+  bool zero_weight = false;  // cast rays of weight 0 too (--all-effects: the naive tracer)
+  static EffectPlan all(std::size_t lights, std::size_t materials) {
+    return {std::vector<char>(lights, 1), std::vector<char>(materials, 1), std::vector<char>(materials, 1), true, true};
+  }
 };
 
 struct RayCounts {
@@ -70,11 +76,12 @@ struct Whitted {
   X(texture, "kd, ka <- the texture at (u, v) or at P; N <- N tilted by the bump map") \
   X(shadow, "for each light i with N.L > 0, if its shadows are planned: blocked_i <- any hit from P (offset) before the light") \
   X(local, "c <- shade(P, N, eye = the ray's origin), blocked lights adding their ambient term only") \
+  X(caustic, "if caustics are planned and kd != 0: c <- c + kd E, E the irradiance of the caustic photons near P (photon map)") \
   X(deep, "if depth = max_depth: return c") \
   X(split, "if refraction is planned: TIR, T, F <- refract(d, N, n1, n2); else F <- 0") \
   X(reflect, "wr <- kr + kt F; if reflection is planned: c <- c + wr trace(the mirror ray from P, depth + 1)") \
   X(transmit, "wt <- kt (1 - F); if refraction is planned and not TIR: c <- c + wt trace(T from P, depth + 1)") \
-  X(budget, "    a ray of weight > 0 is cast only while the pixel's budget lasts") \
+  X(budget, "    a ray of weight > 0 is cast while the pixel's budget lasts; one of weight 0 adds nothing: cast only for --all-effects, within as many again") \
   X(done, "return c")
   SW_LISTING("Whitted ray tracer", SW_TRACER_WHITTED)
 #undef SW_TRACER_WHITTED
@@ -84,7 +91,7 @@ struct Whitted {
 template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
  public:
   WhittedTracer(const TraceScene<Num>& s, const EffectPlan& plan, RayCounts& counts, Probe& probe)
-      : s_(s), plan_(plan), counts_(counts), probe_(probe), budget_(s.budget) {
+      : s_(s), plan_(plan), counts_(counts), probe_(probe), budget_(s.budget), spare_(s.budget) {
     shading_.lights = s.lights;
     shading_.scene_ambient = s.ambient;
     shading_.convention = lighting::Convention::models;
@@ -137,6 +144,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     if constexpr (Probe::on) {
       probe_.leave();
       probe_.step(L::local, StepKind::init).colour("c", c);
+    }
+    if (plan_.caustics && s_.caustics && !(mat.kd == Vec3<Num>{})) {
+      const Vec3<Num> e = caustic_irradiance(*s_.caustics, sf.p);
+      if (!(e == Vec3<Num>{})) c = c + lighting::times(mat.kd, e);
+      if constexpr (Probe::on) probe_.step(L::caustic, StepKind::advance).colour("E", e).colour("c", c);
     }
     if (depth >= s_.max_depth) {
       if constexpr (Probe::on) probe_.step(L::deep, StepKind::done).colour("c", c);
@@ -194,18 +206,19 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     return blocked;
   }
 
-  // c <- c + w trace(the ray from the surface in direction dir): a ray of weight 0 is traced (it
-  // was planned) but adds nothing and costs no budget.
+  // c <- c + w trace(the ray from the surface in direction dir). A ray of weight 0 (itself, or under
+  // an ancestor of weight 0) adds nothing: only --all-effects casts it, from its own allowance, so
+  // both plans spend the pixel's budget on the same rays.
   void add(Vec3<Num>& c, const Num& w, const Num& weight, const Surface<Num>& sf, const Leaving& here, const Vec3<Num>& dir, int depth, std::uint64_t& count) {
     const Num path = Num(weight * w);
-    if (path > Num(0)) {
-      if (budget_ <= 0) {
-        ++counts_.budget_stops;
-        if constexpr (Probe::on) probe_.step(Whitted::budget, StepKind::miss).idx("budget", budget_);
-        return;
-      }
-      --budget_;
+    std::int64_t& allowance = path > Num(0) ? budget_ : spare_;
+    if (!(path > Num(0)) && !plan_.zero_weight) return;
+    if (allowance <= 0) {
+      if (path > Num(0)) ++counts_.budget_stops;
+      if constexpr (Probe::on) probe_.step(Whitted::budget, StepKind::miss).idx("budget", allowance);
+      return;
     }
+    --allowance;
     ++count;
     if constexpr (Probe::on) probe_.enter(Whitted::id, Whitted::listing());
     const Vec3<Num> sub = trace({origin(sf, dir), dir}, depth + 1, path, here);
@@ -226,7 +239,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
   const EffectPlan& plan_;
   RayCounts& counts_;
   Probe& probe_;
-  std::int64_t budget_;
+  std::int64_t budget_, spare_;  // rays of weight > 0 left; rays of weight 0 left (--all-effects)
   lighting::ShadeScene<Num> shading_;
 };
 

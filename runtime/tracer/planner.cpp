@@ -240,7 +240,30 @@ Plan all_effects_plan(const Scene& s) {
     p.decisions.push_back({"reflection", "material '" + m.name + "'", true, "--all-effects"});
     p.decisions.push_back({"refraction", "material '" + m.name + "'", true, "--all-effects"});
   }
+  p.decisions.push_back({"caustics", "the scene", true, "--all-effects"});
   return p;
+}
+
+// Caustics need a light that emits photons, a mirror or glass to bend them, a diffuse surface to
+// catch them, and two bounces; without any of these the photon map stays empty.
+Decision caustics_decision(const Scene& s) {
+  Decision d{"caustics", "the scene", false, ""};
+  auto find_material = [&](auto pred) -> const Material* {
+    for (const Material& m : s.materials)
+      if (pred(m)) return &m;
+    return nullptr;
+  };
+  bool emits = false;
+  for (const auto& l : s.lights) emits = emits || (l.type != lighting::LightType::directional && !is_zero(l.diffuse));
+  const Material* specular = find_material([](const Material& m) { return sgn(m.kr.q) > 0 || sgn(m.kt.q) > 0; });
+  const Material* diffuse = find_material([](const Material& m) { return m.texture >= 0 || !is_zero(m.shading.kd); });
+  if (s.photons.count == 0) d.reason = "photons.count is 0";
+  else if (!emits) d.reason = "no point or spot light with a diffuse colour emits photons";
+  else if (!specular) d.reason = "no material has kr > 0 or kt > 0: no photon is ever bent, so none is stored";
+  else if (!diffuse) d.reason = "no material is diffuse: no surface catches a photon";
+  else if (s.max_depth < 2) d.reason = "max_depth is 1: a caustic path needs a mirror or glass bounce, then a diffuse hit";
+  else d.on = true, d.reason = "material '" + specular->name + "' bends light and material '" + diffuse->name + "' is diffuse";
+  return d;
 }
 
 Plan plan_scene(const Scene& s) {
@@ -274,6 +297,8 @@ Plan plan_scene(const Scene& s) {
     p.decisions.push_back({"refraction", name, refr, refr ? "kt = " + q_text(m.kt.q) : "kt = 0: the transmitted ray's weight kt (1 - F) is 0"});
     p.effects.reflection[k] = refl, p.effects.refraction[k] = refr;
   }
+  p.decisions.push_back(caustics_decision(s));
+  p.effects.caustics = p.decisions.back().on;
   return p;
 }
 

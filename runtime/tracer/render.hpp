@@ -29,6 +29,7 @@ struct RenderResult {
   RayCounts counts;
   std::uint64_t budget_pixels = 0;   // pixels whose budget stopped a ray
   std::uint64_t refined_pixels = 0;  // adaptive: pixels that took more than one sample
+  std::uint64_t photons_stored = 0;  // caustic photons in the map
   double seconds = 0;
   Plan plan;
 };

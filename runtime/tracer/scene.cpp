@@ -144,12 +144,25 @@ void load_meshes(Scene& s) {
   }
 }
 
+// {"count": 0..2^22 = 100000, "gather": 1..1024 = 64, "radius": (0, 1e15] (default: at render,
+// 1/50 of the bounded objects' diagonal), "seed": = 0}
+Photons parse_photons(const Json& j, const std::string& what) {
+  if (!j.is_object()) throw InputError(what + ": expected an object");
+  only_keys_optional(j, {}, {"count", "gather", "radius", "seed"}, what);
+  Photons p;
+  if (j.contains("count")) p.count = parse_integer(j["count"], at(what, "count"), 0, kMaxPhotons);
+  if (j.contains("gather")) p.gather = parse_integer(j["gather"], at(what, "gather"), 1, 1024);
+  if (j.contains("radius")) p.radius = real(j["radius"], at(what, "radius"), 0, kCoordBound, true);
+  p.seed = seed_or(j, "seed", what);
+  return p;
+}
+
 }  // namespace
 
 Scene parse_scene(const Json& j, const SceneOptions& opt) {
   const std::string what = "scene";
   only_keys_optional(j, {"camera", "objects", "materials", "lights"},
-                     {"description", "textures", "background", "ambient", "max_depth", "sampling", "rays_per_pixel"}, what);
+                     {"description", "textures", "background", "ambient", "max_depth", "sampling", "rays_per_pixel", "photons"}, what);
   Scene s;
   if (j.contains("description")) s.description = text(j["description"], "scene.description");
   s.camera = parse_camera(j["camera"], "scene.camera");
@@ -169,6 +182,7 @@ Scene parse_scene(const Json& j, const SceneOptions& opt) {
   if (s.sampling.samples() > s.rays_per_pixel)
     throw InputError("scene.sampling: " + std::to_string(s.sampling.samples()) + " primary rays per pixel, more than rays_per_pixel " +
                      std::to_string(s.rays_per_pixel));
+  if (j.contains("photons")) s.photons = parse_photons(j["photons"], "scene.photons");
   if (opt.load_files) load_meshes(s);
   return s;
 }

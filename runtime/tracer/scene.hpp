@@ -28,6 +28,7 @@ inline constexpr std::size_t kMaxLights = 8;  // the lighting family's `shade` b
 inline constexpr std::int64_t kMaxResolution = 8192, kMaxDepth = 16, kMaxSamplesPerAxis = 16;
 inline constexpr std::int64_t kMaxRaysPerPixel = std::int64_t{1} << 20;
 inline constexpr std::int64_t kMaxImageSide = 16384;  // a PNG texture's width and height
+inline constexpr std::int64_t kMaxPhotons = std::int64_t{1} << 22;
 
 // A number as written (exact) and its nearest double.
 struct Real {
@@ -107,6 +108,13 @@ struct Sampling {
   std::int64_t samples() const { return n * n; }  // the most primary rays per pixel
 };
 
+// Caustic photons (docs/tracer/renderer.md#caustics); radius 0: derived from the scene at render.
+struct Photons {
+  std::int64_t count = 100000, gather = 64;
+  Real radius;
+  std::uint32_t seed = 0;
+};
+
 struct Scene {
   std::string description;
   Camera camera;
@@ -119,6 +127,7 @@ struct Scene {
   std::int64_t max_depth = 5;
   Sampling sampling;
   std::int64_t rays_per_pixel = 1024;
+  Photons photons;
   std::size_t mesh_triangles = 0;  // over all mesh objects (0 when files were not loaded)
 };
 

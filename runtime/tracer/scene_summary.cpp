@@ -62,6 +62,7 @@ Json scene_summary(const Scene& s) {
           {"max_depth", s.max_depth},
           {"sampling", sampling},
           {"rays_per_pixel", s.rays_per_pixel},
+          {"photons", {{"count", s.photons.count}, {"gather", s.photons.gather}, {"radius", sgn(s.photons.radius.q) > 0 ? Json(s.photons.radius.d) : Json("derived")}}},
           {"background", vec(s.background)}};
 }
 
@@ -96,6 +97,8 @@ std::string scene_summary_text(const Scene& s) {
   o << "max depth: " << s.max_depth << '\n';
   o << "sampling: " << kind_name(s.sampling.kind) << ", up to " << s.sampling.samples() << " primary rays per pixel; budget " << s.rays_per_pixel
     << " rays per pixel\n";
+  o << "photons: " << s.photons.count << ", gathering " << s.photons.gather << " within "
+    << (sgn(s.photons.radius.q) > 0 ? std::to_string(s.photons.radius.d) : std::string("1/50 of the objects' diagonal")) << '\n';
   return o.str();
 }
 
