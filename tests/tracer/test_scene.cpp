@@ -128,6 +128,13 @@ TEST_CASE("scene: each bad input is one line naming its JSON path", "[scene]") {
       {R"({"sampling": {"type": "regular", "n": 17}})", "scene.sampling.n:"},
       {R"({"sampling": {"type": "adaptive", "threshold": 0, "max_n": 4}})", "scene.sampling.threshold: must be > 0"},
       {R"({"sampling": {"type": "jittered", "n": 8}, "rays_per_pixel": 32})", "scene.sampling: 64 primary rays per pixel, more than rays_per_pixel 32"},
+      {R"({"photons": {"count": -1}})", "scene.photons.count:"},
+      {R"({"photons": {"count": 4194305}})", "scene.photons.count:"},
+      {R"({"photons": {"gather": 0}})", "scene.photons.gather:"},
+      {R"({"photons": {"radius": 0}})", "scene.photons.radius:"},
+      {R"({"photons": {"radius": "NaN"}})", "scene.photons.radius: not a finite number"},
+      {R"({"photons": {"beams": 3}})", "scene.photons: unknown field \"beams\""},
+      {R"({"photons": 5})", "scene.photons: expected an object"},
       {R"({"sampling": {"type": "stratified"}})", "scene.sampling.type: unknown sampling 'stratified'"},
       {R"({"background": [0, 0]})", "scene.background: expected a colour"},
   };
