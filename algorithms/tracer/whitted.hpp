@@ -180,8 +180,6 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     return c;
   }
 
-  bool budget_spent() const { return budget_ <= 0; }
-
  private:
   // Bit i set: light i faces P (N.L > 0), its shadows are planned, and a ray towards it is blocked.
   std::uint32_t shadows(const Surface<Num>& sf, const Vec3<Num>& ns, const Leaving& here) {

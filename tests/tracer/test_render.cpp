@@ -53,7 +53,7 @@ TEST_CASE("planned renders are byte-identical to all-effects renders on the exam
       const tracer::Scene s = tracer::read_scene_file(e.path().string());
       const auto planned = render(s, false, 48, 36), all = render(s, true, 48, 36);
       CHECK(tracer::to_rgb8(planned) == tracer::to_rgb8(all));
-      CHECK(planned.counts.total() <= all.counts.total());
+      CHECK(planned.counts.total() < all.counts.total());  // every example has a material without mirror or glass
       CHECK(planned.counts.primary == all.counts.primary);
     }
   }
