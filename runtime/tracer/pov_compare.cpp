@@ -202,14 +202,12 @@ ShadowCounts compare_shadows(const Scene& s, std::int64_t w, std::int64_t h, std
         ++c.grazing;
         continue;
       }
-      if (neighbour_differs(mask, w, h, i, j)) {
-        ++c.silhouette;
-        continue;
-      }
+      const bool edge = neighbour_differs(mask, w, h, i, j);
+      if (edge) ++c.silhouette;
       const int e = exact_lit(s, w, h, i, j, light);
       if (e < 0) ++c.undecided;
       else if (e == ours_lit[p]) ++c.ours_right;
-      else ++c.pov_right;
+      else ++c.pov_right, c.unexplained += !edge;
     }
   return c;
 }

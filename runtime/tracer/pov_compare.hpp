@@ -25,7 +25,8 @@ struct ShadowCounts {
   std::size_t differ = 0;
   std::size_t grazing = 0;                                   // of which |cos(N, L)| < 2/255: POV's 8-bit value rounds to 0 or 1
   std::size_t silhouette = 0;                                // of which (not grazing) a neighbour's mask differs in ours
-  std::size_t ours_right = 0, pov_right = 0, undecided = 0;  // the rest, by the exact oracle
+  std::size_t ours_right = 0, pov_right = 0, undecided = 0;  // the ones not grazing, by the exact oracle
+  std::size_t unexplained = 0;                               // POV-Ray right, and not on the mask's edge
 };
 
 // The first-hit objects of pixel (i, j)'s centre ray at width x height, exactly: every object at
