@@ -7,7 +7,9 @@
 #include <iostream>
 #include <regex>
 #include "png.hpp"
+#include "trace_io.hpp"
 #include "tracer/plan.hpp"
+#include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"
 #include "tracer/scene.hpp"
 
@@ -19,7 +21,8 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.check = c.group->add_subcommand("check", "Validate a scene file and print a summary (docs/tracer/scene-format.md)");
   c.plan = c.group->add_subcommand("plan", "Print the effect plan: each effect on or off, and why (docs/tracer/planner.md)");
   c.render = c.group->add_subcommand("render", "Render a scene to a PNG with the Whitted tracer (docs/tracer/renderer.md)");
-  for (CLI::App* sub : {c.check, c.plan, c.render}) sub->add_option("scene", c.file, "Scene file (JSON)")->required();
+  c.export_pov = c.group->add_subcommand("export-pov", "Write the scene as POV-Ray 3.7 SDL: the image, object ids or a shadow mask (docs/tracer/povray.md)");
+  for (CLI::App* sub : {c.check, c.plan, c.render, c.export_pov}) sub->add_option("scene", c.file, "Scene file (JSON)")->required();
   c.check->add_flag("--json", c.json, "Print the summary as one JSON object");
   c.plan->add_flag("--json", c.json, "Print the plan as one JSON object");
   c.render->add_option("--out", c.out, "The PNG to write")->required();
@@ -31,21 +34,43 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.render->add_flag("--quiet", c.quiet, "No progress bar and no summary");
   c.render->add_option("--offset", c.offset, "Secondary ray origins: robust (default), none or epsilon (the naive ones, for the acne lesson)")
       ->check(CLI::IsMember({"robust", "none", "epsilon"}));
+  c.export_pov->add_option("--out", c.out, "The .pov file to write")->required();
+  c.export_pov->add_option("--mode", c.mode, "image (materials mapped), ids (a flat colour per object) or shadow (one light's mask)")
+      ->check(CLI::IsMember({"image", "ids", "shadow"}));
+  c.export_pov->add_option("--light", c.light, "shadow mode: the light's index (0-based)");
+  c.export_pov->add_option("--size", c.size, "WxH the camera is set up for, instead of the scene's resolution");
 }
 
 namespace {
 
+// --size WxH into w, h (left as they are when the option is not given).
+void parse_size(const std::string& size, std::int64_t& w, std::int64_t& h) {
+  if (size.empty()) return;
+  std::smatch m;
+  if (!std::regex_match(size, m, std::regex("([0-9]{1,5})x([0-9]{1,5})"))) throw InputError("--size: expected WxH, e.g. 320x240, got '" + size.substr(0, 40) + "'");
+  w = std::stoll(m[1]), h = std::stoll(m[2]);
+  if (w < 1 || h < 1 || w > tracer::kMaxResolution || h > tracer::kMaxResolution) throw InputError("--size: each side must be in [1, 8192], got " + size);
+}
+
+// The whole SDL is built before the file is opened; AtomicFile leaves no partial file.
+int export_pov(const SceneCommands& c) {
+  const tracer::Scene s = tracer::read_scene_file(c.file);
+  tracer::PovOptions o;
+  o.mode = c.mode == "ids" ? tracer::PovMode::ids : c.mode == "shadow" ? tracer::PovMode::shadow : tracer::PovMode::image;
+  o.light = c.light;
+  parse_size(c.size, o.width, o.height);
+  const tracer::PovScene pov = tracer::export_pov(s, o);
+  AtomicFile out(c.out);
+  out.stream() << pov.text;
+  out.commit();
+  for (const std::string& a : pov.approximations) std::cout << "approximated: " << a << '\n';
+  return 0;
+}
+
 int render(const SceneCommands& c) {
   const tracer::Scene s = tracer::read_scene_file(c.file);
   tracer::RenderOptions o;
-  if (!c.size.empty()) {
-    std::smatch m;
-    if (!std::regex_match(c.size, m, std::regex("([0-9]{1,5})x([0-9]{1,5})")))
-      throw InputError("--size: expected WxH, e.g. 320x240, got '" + c.size.substr(0, 40) + "'");
-    o.width = std::stoll(m[1]), o.height = std::stoll(m[2]);
-    if (o.width < 1 || o.height < 1 || o.width > tracer::kMaxResolution || o.height > tracer::kMaxResolution)
-      throw InputError("--size: each side must be in [1, 8192], got " + c.size);
-  }
+  parse_size(c.size, o.width, o.height);
   if (c.spp != 0) {
     const auto n = static_cast<std::int64_t>(std::llround(std::sqrt(double(c.spp))));
     if (c.spp < 1 || c.spp > 256 || n * n != c.spp) throw InputError("--spp: must be a square in [1, 256] (1, 4, 9, ..., 256), got " + std::to_string(c.spp));
@@ -87,6 +112,7 @@ int run_scene_commands(const SceneCommands& c) {
     return 0;
   }
   if (*c.render) return render(c);
+  if (*c.export_pov) return export_pov(c);
   return 2;
 }
 

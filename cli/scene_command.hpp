@@ -1,5 +1,6 @@
 // `stepwise scene ...`: the commands on one ray-tracer scene file (docs/tracer/scene-format.md).
-// `check` validates it and prints a summary; `plan` prints the effect plan; `render` renders it.
+// `check` validates it and prints a summary; `plan` prints the effect plan; `render` renders it;
+// `export-pov` writes it as POV-Ray SDL (docs/tracer/povray.md).
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
@@ -9,13 +10,15 @@ namespace sw::cli {
 // main keeps this alive while parsing: the subcommands write their options into it.
 struct SceneCommands {
   CLI::App* group = nullptr;
-  CLI::App *check = nullptr, *plan = nullptr, *render = nullptr;
+  CLI::App *check = nullptr, *plan = nullptr, *render = nullptr, *export_pov = nullptr;
   std::string file;
   bool json = false;
   std::string out, size, offset = "robust";
   std::int64_t spp = 0;
   bool adaptive = false, all_effects = false, quiet = false;
   unsigned threads = 0;
+  std::string mode = "image";  // export-pov
+  std::size_t light = 0;
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

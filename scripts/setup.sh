@@ -13,6 +13,7 @@ PACKAGES=(
   xvfb xauth libembree-dev fonts-dejavu-core libtinyobjloader-dev libnanoflann-dev
   libcgal-demo clang libclang-rt-14-dev llvm-14
   libmd4c-dev libmd4c-html0-dev chromium chromium-driver python3 python3-jsonschema
+  povray
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
