@@ -25,7 +25,23 @@ struct WhittedOutput {
 // tests: room for the deepest recursion (16) and its callees, so that no ray is summarised.
 constexpr int kHistoryNesting = 24;
 
+// An upper estimate of a history's steps: at most 2^max_depth - 1 rays (each casts at most a
+// mirror and a transmitted ray); per ray its scene-hit and one per light, each a visit, a nested
+// test of at most 13 steps and a keep per object (a mesh: bvh-traverse's 51 per triangle), shade's
+// steps per light and Whitted's own lines.
+std::size_t history_steps(const HistoryInput& in) {
+  const tracer::Scene& s = *in.scene;
+  std::size_t per_hit = 4;
+  for (const tracer::Object& o : s.objects)
+    per_hit += o.kind == tracer::ObjectKind::mesh && s.meshes[std::size_t(o.mesh)].mesh ? 51 * s.meshes[std::size_t(o.mesh)].mesh->size() + 8 : 16;
+  const std::size_t lights = s.lights.size();
+  const std::size_t per_ray = (1 + lights) * per_hit + 40 * lights + 40;
+  const std::size_t rays = (std::size_t{1} << std::min<std::int64_t>(s.max_depth, 20)) - 1;
+  return 16 + rays * per_ray;
+}
+
 struct WhittedSpec {
+  static constexpr std::array hooks{Hook::estimate_steps};
   using Algo = tracer::Whitted;
   using Input = HistoryInput;
   using Output = WhittedOutput;
@@ -53,6 +69,7 @@ struct WhittedSpec {
             {"budget_spent", o.pixel.budget_spent}};
   }
   static std::size_t ops(const Output&) { return 1; }
+  static std::size_t estimate_steps(const Input& in) { return history_steps(in); }
   // The renderer's own pixel, untraced (tests/tracer/test_pixel_history.cpp holds it to render()).
   static Output oracle(const Input& in) { return {tracer::pixel_colour(*tracer::history_scene(in), in.i, in.j)}; }
   static std::vector<BenchSet<Input>> bench_sets() {

@@ -96,6 +96,6 @@ TEST_CASE("pixel history: bad input is one line naming the JSON path", "[tracer]
   CHECK_THAT(message(R"({"scene":"scenes/glass-spheres.json"})"), Catch::Contains("pixel"));
   CHECK_THAT(message(R"({"scene":"scenes/glass-spheres.json","pixel":[0,0],"all_effects":1})"), Catch::StartsWith("input.all_effects"));
   CHECK(message(R"({"scene":"scenes/glass-spheres.json","pixel":[0,0]})") == "accepted");
-  for (const std::string m : {message(R"({"scene":3,"pixel":[0,0]})"), message(R"({"scene":"scenes/none.json","pixel":[0,0]})")})
+  for (const std::string& m : {message(R"({"scene":3,"pixel":[0,0]})"), message(R"({"scene":"scenes/none.json","pixel":[0,0]})")})
     CHECK(m.find('\n') == std::string::npos);
 }
