@@ -30,3 +30,6 @@ shot 19-gouraud-phong           # the largest difference: Phong's highlight that
 shot 20-minnaert-moon           # the full-moon disc, nearly flat (the Sweep tab)
 shot 21-fresnel-grazing         # F = 0.573 at 84.3 degrees
 shot 22-phong-blinn             # 0.985^20 = 0.736 against Blinn-Phong's 0.927
+shot 23-shadow-acne             # the scene with its acne specks, the traced pixel's blocked shadow ray
+shot 24-glass-tir               # (3D) TIR on the slab's far face: tir = 1, guide_tir = 0
+shot 25-planner-skips           # the planner's decisions beside the image

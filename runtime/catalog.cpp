@@ -16,6 +16,7 @@ const std::vector<Algorithm>& catalog() {
     register_fill(v);
     register_spatial(v);
     register_lighting(v);
+    register_tracer(v);
     return v;
   }();
   return all;

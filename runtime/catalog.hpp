@@ -113,5 +113,6 @@ void register_fill(std::vector<Algorithm>& out);
 void register_rays(std::vector<Algorithm>& out);
 void register_spatial(std::vector<Algorithm>& out);
 void register_lighting(std::vector<Algorithm>& out);
+void register_tracer(std::vector<Algorithm>& out);
 
 }  // namespace sw

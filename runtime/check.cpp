@@ -263,7 +263,10 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     // The replay: exact where the algorithm has it, else the reference (transcendental values). An
     // int trace replays in int: integer arithmetic is exact, and a fixed-point algorithm records its
     // values in its own units (triangle-edge: 1/256 pixel).
-    const Numeric replay_mode = mode == Numeric::integer ? Numeric::integer : alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
+    // An algorithm with neither (the ray tracer, double only) replays in double: the trace's
+    // decisions are held exactly and its numbers within double's tolerance of that replay.
+    Numeric replay_mode = mode == Numeric::integer ? Numeric::integer : alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
+    if (!alg.supports(replay_mode) && mode != Numeric::integer && alg.supports(Numeric::f64)) replay_mode = Numeric::f64;
     if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
     alg.validate(input, replay_mode);
     check_budget(alg, input, replay_mode, budget);
@@ -312,7 +315,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     const Json oracle = alg.oracle(input);
     if (auto d = value_diff(alg.canonical(oracle), alg.canonical((*last)["result"]), tol, false, "result")) throw diverged("result", *d);
     rep.steps = i;
-    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::reference ? "reference" : "exact oracle") +
+    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::reference ? "reference" : replay_mode == Numeric::f64 ? "double replay and its oracle" : "exact oracle") +
                   (tol.rel > 0 && tol.numbers ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))" : "");
   } catch (const Diverged& d) {
     rep.status = 1;

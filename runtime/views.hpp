@@ -22,8 +22,9 @@ enum class View : std::uint8_t {
   plot,     // the table's columns over its rows, against an exact run
   tree,     // a tree's nodes as a diagram: built so far, the current node, the traversal stack
   lobe,     // a polar plot: the algorithm swept over directions in a plane (a BRDF's lobe), against exact
+  scene,    // a ray tracer's rendered image: a click traces that pixel; the planner's decisions, the ray tree's shares
 };
-inline constexpr std::array<std::string_view, 7> kViewNames = {"plane2d", "orbit3d", "table", "image", "plot", "tree", "lobe"};
+inline constexpr std::array<std::string_view, 8> kViewNames = {"plane2d", "orbit3d", "table", "image", "plot", "tree", "lobe", "scene"};
 constexpr std::string_view view_name(View v) { return kViewNames[static_cast<std::size_t>(v)]; }
 inline std::optional<View> parse_view(std::string_view s) {
   for (std::size_t i = 0; i < kViewNames.size(); ++i)

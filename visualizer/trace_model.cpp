@@ -30,6 +30,9 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
   }
   const TraceView& t = *rec_.trace;
   const std::size_t n = t.size();
+  // The algorithm's own listing: scope 0, or a recursive call of itself (a ray tracer's mirror
+  // rays), whose kept items are the algorithm's to show and last.
+  auto own = [&](std::uint8_t scope) { return scope == 0 || t.scope_id(scope) == alg.id; };
   name_of_var_.resize(n ? t.at(n - 1).var_end : 0);
   for (std::size_t s = 0; s < n; ++s) {
     const StepRecord& st = t.at(s);
@@ -46,7 +49,7 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
     }
     for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
       const GeoRecord& geo = t.geo_at(g);
-      if (geo.life != Life::step) lasting_.push_back(g), lasting_end_.push_back(st.scope ? static_cast<std::uint32_t>(s) : kNoStep);
+      if (geo.life != Life::step) lasting_.push_back(g), lasting_end_.push_back(own(st.scope) ? kNoStep : static_cast<std::uint32_t>(s));
       if (geo.kind == GeoKind::pixel) {
         const Pixel p{t.int_value(geo.slot), t.int_value(geo.slot + 1)};
         plots_.push_back({p, static_cast<std::uint32_t>(s)});
@@ -79,9 +82,10 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
       name_of_var_[v] = static_cast<std::uint8_t>(it - names_.begin());
     }
   }
-  // A nested item (its step stored above) ends at the next step of scope 0; none: it lasts.
+  // A nested item (its step stored above) ends at the next step of the algorithm's own listing;
+  // none: it lasts.
   std::vector<std::uint32_t> next_own(n, kNoStep);
-  for (std::size_t s = n; s-- > 1;) next_own[s - 1] = t.at(s).scope == 0 ? static_cast<std::uint32_t>(s) : next_own[s];
+  for (std::size_t s = n; s-- > 1;) next_own[s - 1] = own(t.at(s).scope) ? static_cast<std::uint32_t>(s) : next_own[s];
   for (std::uint32_t& end : lasting_end_)
     if (end != kNoStep) end = next_own[end];
   // Checkpoint c holds, per name, the latest var record among steps [0, c * kCheckpoint).

@@ -4,6 +4,7 @@
 #include "orbit_canvas.hpp"
 #include "pixel_canvas.hpp"
 #include "plot_view.hpp"
+#include "scene_view.hpp"
 #include "table_view.hpp"
 #include "tree_view.hpp"
 
@@ -23,6 +24,7 @@ constexpr ViewInfo kViews[] = {
     {View::plot, "Plot", "A column of the table over its rows, against an exact run", make_with<PlotCanvas>},
     {View::tree, "Tree", "The tree's nodes: built so far, the current node, the traversal stack", make_with<TreeCanvas>},
     {View::lobe, "Lobe", "The term as a polar plot over the eye's directions in the plane of incidence, against the reference", make_with<LobeCanvas>},
+    {View::scene, "Scene", "The rendered scene: click a pixel to trace its history; the planner's decisions and the ray tree", make_with<SceneCanvas>},
 };
 static_assert(std::size(kViews) == kViewNames.size(), "one registry entry per View");
 

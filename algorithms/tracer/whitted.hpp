@@ -115,7 +115,12 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     const Hit<Num> h = scene_hit(s_, r, false, Num(0), from, probe_);
     if constexpr (Probe::on) {
       probe_.leave();
-      probe_.step(L::closest, h.hit ? StepKind::hit : StepKind::miss).idx("depth", depth).num("weight", weight).idx("object", h.object).num("t", h.t).ray(r.o, r.d).keep();
+      auto& st = probe_.step(L::closest, h.hit ? StepKind::hit : StepKind::miss).idx("depth", depth).num("weight", weight).idx("object", h.object).num("t", h.t);
+      // The ray tree: each ray to its hit, labelled by depth; the primary also shows the scene.
+      const char* label = kDepthLabels[depth < kDepthLabelCount ? depth : kDepthLabelCount - 1];
+      if (h.hit) st.segment(r.o, Vec3<Num>(r.o + h.t * r.d)).label(label).keep();
+      else st.ray(r.o, r.d).label(label).keep();
+      if (depth == 1 && s_.objects.size() <= 64) record_objects(st);
     }
     if (!h.hit) {
       if constexpr (Probe::on) probe_.step(L::background, StepKind::done).colour("c", s_.background);
@@ -169,11 +174,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     const Num wr = Num(m.kr + m.kt * tr.fresnel), wt = Num(m.kt * Num(Num(1) - tr.fresnel));
     if (plan_.reflection[mi]) {
       const Vec3<Num> dir = r.d - Num(Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
-      if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror").keep();
+      if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror");
       add(c, wr, weight, sf, here, dir, depth, counts_.reflection);
     }
     if (plan_.refraction[mi] && !tr.tir) {
-      if constexpr (Probe::on) probe_.step(L::transmit, StepKind::advance).num("wt", wt).ray(sf.p, tr.dir).label("T").keep();
+      if constexpr (Probe::on) probe_.step(L::transmit, StepKind::advance).num("wt", wt).ray(sf.p, tr.dir).label("T");
       add(c, wt, weight, sf, here, tr.dir, depth, counts_.refraction);
     }
     if constexpr (Probe::on) probe_.step(L::done, StepKind::done).colour("c", c);
@@ -197,7 +202,9 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
       const bool hit = scene_hit(s_, sr, true, positional ? Num(1) : std::numeric_limits<Num>::infinity(), here, probe_).hit;
       if constexpr (Probe::on) {
         probe_.leave();
-        probe_.step(L::shadow, hit ? StepKind::hit : StepKind::miss).idx("i", std::int64_t(i)).idx("blocked", hit).ray(sr.o, sr.d).label(hit ? "blocked" : "lit").keep();
+        auto& st = probe_.step(L::shadow, hit ? StepKind::hit : StepKind::miss).idx("i", std::int64_t(i)).idx("blocked", hit);
+        if (positional) st.segment(sr.o, Vec3<Num>(sr.o + sr.d)).label(hit ? "blocked" : "lit").keep();  // to the light
+        else st.ray(sr.o, sr.d).label(hit ? "blocked" : "lit").keep();
       }
       if (hit) blocked |= 1u << i, ++counts_.shadow_blocked;
     }
@@ -222,6 +229,29 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     const Vec3<Num> sub = trace({origin(sf, dir), dir}, depth + 1, path, here);
     if constexpr (Probe::on) probe_.leave();
     if (w > Num(0)) c = c + w * sub;
+  }
+
+  // Labels of the ray tree's rays by depth (string literals: the recorder keeps the pointer).
+  static constexpr const char* kDepthLabels[] = {"ray", "primary", "depth 2", "depth 3", "depth 4", "depth 5", "depth 6", "depth 7", "depth 8",
+                                                 "depth 9", "depth 10", "depth 11", "depth 12", "depth 13", "depth 14", "depth 15", "depth 16"};
+  static constexpr int kDepthLabelCount = int(sizeof kDepthLabels / sizeof *kDepthLabels);
+  // The scene's objects as kept geometry (meshes by their BVH's root box).
+  template <class Step> void record_objects(Step& st) const {
+    for (const Prim<Num>& o : s_.objects) {
+      switch (o.shape) {
+        case Shape::sphere: st.sphere(o.a, o.radius).keep(); break;
+        case Shape::plane: st.plane(o.a, o.b).keep(); break;
+        case Shape::box: st.box(o.a, o.b).keep(); break;
+        case Shape::triangle: st.triangle(o.v[0], o.v[1], o.v[2]).keep(); break;
+        case Shape::mesh: {
+          const auto& nodes = s_.meshes[static_cast<std::size_t>(o.mesh)].bvh.nodes;
+          if (nodes.empty()) break;
+          const auto& b = nodes[0].box;
+          st.box(Vec3<Num>{b.lo[0], b.lo[1], b.lo[2]}, Vec3<Num>{b.hi[0], b.hi[1], b.hi[2]}).keep();
+          break;
+        }
+      }
+    }
   }
 
   Vec3<Num> origin(const Surface<Num>& sf, const Vec3<Num>& dir) const {

@@ -1,0 +1,107 @@
+#include "tracer/history.hpp"
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+namespace sw::tracer {
+
+std::string source_root() {
+  if (const char* env = std::getenv("STEPWISE_SOURCE"); env && *env) return env;
+#ifdef SW_SOURCE_ROOT
+  return SW_SOURCE_ROOT;
+#else
+  return ".";
+#endif
+}
+
+namespace {
+
+std::shared_ptr<const Scene> load_scene(const Json& v, std::string* name) {
+  if (v.is_string()) {
+    std::filesystem::path p = v.get<std::string>();
+    *name = p.string();
+    if (p.is_relative()) p = std::filesystem::path(source_root()) / p;
+    return std::make_shared<const Scene>(read_scene_file(p.lexically_normal().string()));
+  }
+  if (!v.is_object()) throw InputError("input.scene: expected a scene file (relative to the source tree) or a scene object");
+  *name = "inline";
+  SceneOptions opt;
+  opt.base_dir = source_root();
+  try {
+    return std::make_shared<const Scene>(parse_scene(v, opt));
+  } catch (const InputError& e) {
+    throw InputError("input." + std::string(e.what()));  // "input.scene.objects[1]...": the input's path
+  }
+}
+
+std::array<std::int64_t, 2> pair(const Json& j, const char* key, std::int64_t lo, std::int64_t hi0, std::int64_t hi1) {
+  const Json& v = j[key];
+  const std::string what = std::string("input.") + key;
+  if (!v.is_array() || v.size() != 2) throw InputError(what + ": expected [" + (key[0] == 'p' ? "i, j" : "width, height") + "]");
+  return {parse_integer(v[0], what + "[0]", lo, hi0), parse_integer(v[1], what + "[1]", lo, hi1)};
+}
+
+}  // namespace
+
+HistoryInput parse_history_input(const Json& j) {
+  if (!j.is_object()) throw InputError("input: expected an object");
+  only_keys_optional(j, {"scene", "pixel"}, {"size", "offset", "all_effects"}, "input");
+  HistoryInput in;
+  in.scene = load_scene(j["scene"], &in.scene_name);
+  in.width = in.scene->camera.width, in.height = in.scene->camera.height;
+  if (j.contains("size")) {
+    const auto s = pair(j, "size", 1, kMaxResolution, kMaxResolution);
+    in.width = s[0], in.height = s[1];
+  }
+  const auto p = pair(j, "pixel", 0, in.width - 1, in.height - 1);
+  in.i = p[0], in.j = p[1];
+  if (j.contains("offset")) {
+    const Json& o = j["offset"];
+    if (o == "robust") in.offset = Offset::robust;
+    else if (o == "none") in.offset = Offset::none;
+    else if (o == "epsilon") in.offset = Offset::epsilon;
+    else throw InputError("input.offset: expected \"robust\", \"none\" or \"epsilon\"");
+  }
+  if (j.contains("all_effects")) {
+    if (!j["all_effects"].is_boolean()) throw InputError("input.all_effects: expected true or false");
+    in.all_effects = j["all_effects"].get<bool>();
+  }
+  return in;
+}
+
+std::shared_ptr<const HistoryScene> history_scene(const HistoryInput& in) {
+  auto h = std::make_shared<HistoryScene>();
+  h->scene = trace_scene(*in.scene, in.width, in.height);
+  h->scene.offset = in.offset;
+  h->plan = in.all_effects ? all_effects_plan(*in.scene) : plan_scene(*in.scene);
+  return h;
+}
+
+PixelColour pixel_colour(const HistoryScene& s, std::int64_t i, std::int64_t j) {
+  PixelColour out;
+  NoProbe none;
+  WhittedTracer<double> tracer(s.scene, s.plan.effects, out.counts, none);
+  out.rgb = tracer.sample(i, j, 0.0, 0.0);
+  out.budget_spent = out.counts.budget_stops > 0;
+  return out;
+}
+
+Preview render_preview(const HistoryInput& in, std::int64_t max_side) {
+  Preview p;
+  p.scale = std::max<std::int64_t>(1, (std::max(in.width, in.height) + max_side - 1) / std::max<std::int64_t>(max_side, 1));
+  Scene centres = *in.scene;
+  centres.sampling = Sampling{};  // one sample through each pixel's centre, as the history traces
+  RenderOptions opt;
+  opt.width = std::max<std::int64_t>(1, in.width / p.scale), opt.height = std::max<std::int64_t>(1, in.height / p.scale);
+  opt.all_effects = in.all_effects, opt.offset = in.offset;
+  const RenderResult r = render(centres, opt);
+  p.width = r.width, p.height = r.height, p.rgb = to_rgb8(r), p.plan = r.plan, p.seconds = r.seconds;
+  return p;
+}
+
+Json with_pixel(Json input, std::int64_t i, std::int64_t j) {
+  input["pixel"] = Json::array({i, j});
+  return input;
+}
+
+}  // namespace sw::tracer
