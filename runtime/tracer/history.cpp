@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <thread>
+#include "tracer/photons.hpp"
 
 namespace sw::tracer {
 
@@ -74,6 +76,11 @@ std::shared_ptr<const HistoryScene> history_scene(const HistoryInput& in) {
   h->scene = trace_scene(*in.scene, in.width, in.height);
   h->scene.offset = in.offset;
   h->plan = in.all_effects ? all_effects_plan(*in.scene) : plan_scene(*in.scene);
+  if (h->plan.effects.caustics) {  // the same photon map as render() builds
+    std::uint64_t rays = 0;
+    build_photon_map(*in.scene, h->scene, std::max(1u, std::thread::hardware_concurrency()), h->photons, rays);
+    h->scene.caustics = &h->photons;
+  }
   return h;
 }
 

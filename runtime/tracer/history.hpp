@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 #include "input.hpp"
+#include "tracer/photon_map.hpp"
 #include "tracer/plan.hpp"
 #include "tracer/render.hpp"
 #include "tracer/scene.hpp"
@@ -32,8 +33,12 @@ std::string source_root();
 
 // The scene converted for tracing at the input's size, with its offset mode and plan.
 struct HistoryScene {
-  TraceScene<double> scene;
+  TraceScene<double> scene;  // scene.caustics points at photons (so a HistoryScene is not copied)
   Plan plan;
+  PhotonMap photons;
+  HistoryScene() = default;
+  HistoryScene(const HistoryScene&) = delete;
+  HistoryScene& operator=(const HistoryScene&) = delete;
 };
 std::shared_ptr<const HistoryScene> history_scene(const HistoryInput& in);
 
