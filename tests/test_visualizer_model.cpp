@@ -11,6 +11,7 @@
 #include "fill_oracle.hpp"
 #include "lesson.hpp"
 #include "pixel_layer.hpp"
+#include "spatial/ray_triangles.hpp"
 #include "trace_model.hpp"
 
 using namespace sw;
@@ -198,6 +199,29 @@ TEST_CASE("visualizer model: geometry lifetimes keep, replace and end with the s
   const auto last = m->visible_items(3);
   for (std::uint32_t g : last)
     if (t.geo_at(g).label && std::string(t.geo_at(g).label) == "[t_near, t_far]") CHECK(*t.geo_value(t.geo_at(g)) == 1);
+}
+
+TEST_CASE("visualizer model: stepping over nested calls", "[visualizer][model]") {
+  // ray-triangles tests two triangles, each inside the watertight test's nested listing: from the
+  // first `test` step (scope 0) the step over lands on the next step of its own listing, after
+  // every step of the callee; back over returns to it.
+  const auto m = record_model(find_algorithm("ray-triangles"),
+                              parse_json_text(R"({"triangles":[[[0,0,0],[1,0,0],[0,1,0]],[[0,0,1],[1,0,1],[0,1,1]]],"ray":{"o":[0.25,0.25,-1],"d":[0,0,1]},"test":"watertight"})", "t"),
+                              Numeric::exact);
+  const TraceView& t = m->trace();
+  std::size_t first_test = 0;
+  while (t.at(first_test).scope != 0 || t.at(first_test).line != spatial::RayTriangles::test) ++first_test;
+  REQUIRE(t.at(first_test + 1).scope != 0);  // the callee's steps follow
+  const auto over = m->step_over(first_test, true);
+  REQUIRE(over);
+  CHECK(t.at(*over).scope == 0);
+  for (std::size_t s = first_test + 1; s < *over; ++s) CHECK(t.at(s).scope != 0);
+  CHECK(m->step_over(*over, false) == first_test);
+  // From inside the callee, the next step of the callee's listing.
+  const auto inner = m->step_over(first_test + 1, true);
+  REQUIRE(inner);
+  CHECK(*inner == first_test + 2);
+  CHECK_FALSE(m->step_over(m->last(), true));
 }
 
 TEST_CASE("visualizer texture: scrubbing updates the texture incrementally and exactly", "[visualizer][texture]") {

@@ -111,6 +111,7 @@ class App {
   void fill_endpoint_fields();
   void handle_keys();
   void advance_playback(float dt);
+  void step_over(bool forward);  // Down/Up and the "over >" button: past nested calls
 
   void draw_toolbar(ImVec2 pos, ImVec2 size);
   void draw_menu_bar();      // lesson_menu.cpp

@@ -37,6 +37,9 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
   ImGui::SameLine();
   if (ImGui::Button(">|", b)) set_step(last), playing_ = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("End (End)");
+  ImGui::SameLine();
+  if (ImGui::Button("over >", ImVec2(4.7f * em, 0))) step_over(true);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Step over nested calls: the next step of this listing or the algorithm's (Down; Up goes back)");
 
   const float pad = ImGui::GetStyle().ItemSpacing.x;
   flow(ImGui::CalcTextSize("Speed 100000 steps/s").x + 2 * (1.7f * em + pad) + 2 * pad, gap);
@@ -75,7 +78,7 @@ void App::draw_timeline(ImVec2 pos, ImVec2 size) {
   if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &s, &lo, &hi, format)) set_step(s), playing_ = false;
   if (stats_ && !compare_.other) draw_divergence_ticks(ImGui::GetWindowDrawList(), stats_->divergences, last, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   // The keys, for the one at the keyboard, in one row: the longest that fits (none when presenting).
-  const char* keys[] = {("Space play/pause   Left/Right step   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "
+  const char* keys[] = {("Space play/pause   Left/Right step   Up/Down over calls   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "
                          "F fit   P present   Ctrl+Left/Right lesson"),
                         "Space play   Left/Right step   Home/End   +/- speed   wheel zoom   drag pan   F fit   P present   Ctrl+Left/Right lesson",
                         "Space play   Left/Right step   F fit   P present"};
@@ -102,6 +105,8 @@ void App::handle_keys() {
   } else if (!io.KeyShift) {  // Shift + arrows pan the canvas
     if (pressed(ImGuiKey_LeftArrow) && step_ > 0) set_step(step_ - 1), playing_ = false;
     if (pressed(ImGuiKey_RightArrow)) set_step(step_ + 1), playing_ = false;
+    if (pressed(ImGuiKey_DownArrow)) step_over(true);
+    if (pressed(ImGuiKey_UpArrow)) step_over(false);
   }
   if (pressed(ImGuiKey_Home)) set_step(0);
   if (pressed(ImGuiKey_End)) set_step(a_->last());
@@ -115,6 +120,12 @@ void App::handle_keys() {
     }
     if ((ch == 'q' || ch == 'Q') && lesson_) set_quiz(!quiz_.on);
   }
+}
+
+void App::step_over(bool forward) {
+  if (!a_) return;
+  if (const auto s = a_->step_over(step_, forward)) set_step(*s);
+  playing_ = false;
 }
 
 void App::advance_playback(float dt) {

@@ -229,6 +229,21 @@ std::optional<std::size_t> TraceModel::find_kind(std::size_t from, StepKind kind
   return std::nullopt;
 }
 
+std::optional<std::size_t> TraceModel::step_over(std::size_t from, bool forward) const {
+  const TraceView& t = *rec_.trace;
+  if (from >= size()) return std::nullopt;
+  const std::uint8_t here = t.at(from).scope;
+  auto in_view = [&](std::size_t s) { return t.at(s).scope == here || t.at(s).scope == 0; };
+  if (forward) {
+    for (std::size_t s = from + 1; s < size(); ++s)
+      if (in_view(s)) return s;
+  } else {
+    for (std::size_t s = from; s-- > 0;)
+      if (in_view(s)) return s;
+  }
+  return std::nullopt;
+}
+
 std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric, const Budget& budget) {
   alg.validate(input, numeric);
   check_budget(alg, input, numeric, budget);

@@ -90,6 +90,9 @@ class TraceModel {
 
   // First step > from (or < from, backward) of the given kind; nullopt if none.
   std::optional<std::size_t> find_kind(std::size_t from, StepKind kind, bool forward) const;
+  // Stepping over nested calls: the first step > from (< from, backward) in from's own listing
+  // (scope) or in the algorithm's (scope 0), so a callee's steps are summarised by its caller's.
+  std::optional<std::size_t> step_over(std::size_t from, bool forward) const;
 
  private:
   static constexpr std::size_t kCheckpoint = 256;
