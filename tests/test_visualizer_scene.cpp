@@ -1,6 +1,7 @@
 // The scene view of the ray tracer's pixel history (View::scene): the preview drawn is the
 // renderer's image, a click on a pixel traces that pixel (its history becomes the trace), the ray
 // tree's table follows, and the 3D view keeps every ray of the tree to the end.
+#ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include "headless.hpp"
 #include "scene_view.hpp"
@@ -56,3 +57,4 @@ TEST_CASE("scene view: the preview is drawn and a click on a pixel records that 
     if (const char* l = m.trace().geo_at(g).label) depth2 = depth2 || std::string_view(l) == "depth 2";
   CHECK(depth2);
 }
+#endif  // SW_HAVE_VISUALIZER
