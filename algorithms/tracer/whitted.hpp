@@ -10,6 +10,7 @@
 #pragma once
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 #include "lighting/shade.hpp"
 #include "rays/camera_ray.hpp"
@@ -86,6 +87,17 @@ struct Whitted {
   SW_LISTING("Whitted ray tracer", SW_TRACER_WHITTED)
 #undef SW_TRACER_WHITTED
 };
+
+// Towards light li from p: its position - p (point, spot), or its direction; 0 when it sits at p.
+template <class Num> Vec3<Num> towards(const lighting::Light<Num>& li, const Vec3<Num>& p) {
+  return li.type != lighting::LightType::directional ? Vec3<Num>(li.where - p) : li.where;
+}
+// The shadow ray from origin o towards li, and the t before which a hit blocks it (the light's
+// position at t = 1; a directional light at infinity).
+template <class Num> std::pair<ray::Ray3<Num>, Num> shadow_ray(const lighting::Light<Num>& li, const Vec3<Num>& o) {
+  const bool positional = li.type != lighting::LightType::directional;
+  return {{o, towards(li, o)}, positional ? Num(1) : std::numeric_limits<Num>::infinity()};
+}
 
 // One pixel's tracer (construct one per pixel: the budget is the pixel's).
 template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
@@ -193,13 +205,12 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     for (std::size_t i = 0; i < s_.lights.size(); ++i) {
       const lighting::Light<Num>& li = s_.lights[i];
       const bool positional = li.type != lighting::LightType::directional;
-      const Vec3<Num> to_light = positional ? Vec3<Num>(li.where - sf.p) : li.where;
+      const Vec3<Num> to_light = towards(li, sf.p);
       if (!plan_.shadows[i] || to_light == Vec3<Num>{} || lighting::sign_dot(ns, to_light) <= 0) continue;
-      const Vec3<Num> o = origin(sf, to_light);
-      const ray::Ray3<Num> sr{o, positional ? Vec3<Num>(li.where - o) : li.where};
+      const auto [sr, t_max] = shadow_ray(li, origin(sf, to_light));
       ++counts_.shadow;
       if constexpr (Probe::on) probe_.enter(SceneHit::id, SceneHit::listing());
-      const bool hit = scene_hit(s_, sr, true, positional ? Num(1) : std::numeric_limits<Num>::infinity(), here, probe_).hit;
+      const bool hit = scene_hit(s_, sr, true, t_max, here, probe_).hit;
       if constexpr (Probe::on) {
         probe_.leave();
         auto& st = probe_.step(L::shadow, hit ? StepKind::hit : StepKind::miss).idx("i", std::int64_t(i)).idx("blocked", hit);

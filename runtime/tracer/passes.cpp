@@ -32,20 +32,17 @@ ShadowPass shadow_pass(const TraceScene<double>& ts, std::size_t light) {
   const std::size_t n = static_cast<std::size_t>(ts.camera.width * ts.camera.height);
   out.lit.assign(n, 0), out.cosine.assign(n, 0.0);
   const lighting::Light<double>& li = ts.lights[light];
-  const bool positional = li.type != lighting::LightType::directional;
   NoProbe none;
   each_pixel(ts, [&](std::size_t p, const ray::Ray3<double>& r, const Hit<double>& h) {
     if (!h.hit) return;
     const Surface<double> sf = surface_at(ts, r, h);
     const Vec3<double> nf = dot(r.d, sf.n) < 0 ? sf.n : -1.0 * sf.n;
-    const Vec3<double> to_light = positional ? Vec3<double>(li.where - sf.p) : li.where;
+    const Vec3<double> to_light = towards(li, sf.p);
     if (to_light == Vec3<double>{}) return;
     out.cosine[p] = dot(nf, to_light) / std::sqrt(dot(to_light, to_light));
     if (lighting::sign_dot(nf, to_light) <= 0) return;
-    const Vec3<double> o = offset_origin(sf, to_light);
-    const ray::Ray3<double> sr{o, positional ? Vec3<double>(li.where - o) : li.where};
-    const bool blocked =
-        scene_hit(ts, sr, true, positional ? 1.0 : std::numeric_limits<double>::infinity(), Leaving{h.object, h.prim}, none).hit;
+    const auto [sr, t_max] = shadow_ray(li, offset_origin(sf, to_light));
+    const bool blocked = scene_hit(ts, sr, true, t_max, Leaving{h.object, h.prim}, none).hit;
     out.lit[p] = !blocked;
   });
   return out;
