@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <gmpxx.h>
 
 namespace sw {
@@ -37,7 +38,66 @@ inline std::optional<Numeric> parse_numeric(std::string_view s) {
   return std::nullopt;
 }
 
-using Rational = mpq_class;
+// Exact rationals with eager operators: a + b of two Rationals is a Rational (GMP's expression
+// templates return lazy expressions, which templates cannot deduce). Operators on temporaries
+// reuse the temporary's storage, so a chain of operations allocates about as gmpxx's does.
+class Rational : public mpq_class {
+ public:
+  using mpq_class::mpq_class;
+  Rational() = default;
+  Rational(const mpq_class& q) : mpq_class(q) {}
+  Rational(mpq_class&& q) : mpq_class(std::move(q)) {}
+  template <class T, class U> Rational(const __gmp_expr<T, U>& e) : mpq_class(e) {}
+  Rational(const Rational&) = default;
+  Rational(Rational&&) = default;
+  Rational& operator=(const Rational&) = default;
+  Rational& operator=(Rational&&) = default;
+  template <class T> Rational& operator=(T&& v) {
+    mpq_class::operator=(std::forward<T>(v));
+    return *this;
+  }
+
+#define SW_RATIONAL_OP(op, fn)                                                                          \
+  friend Rational operator op(const Rational& a, const Rational& b) {                                  \
+    Rational r;                                                                                         \
+    fn(r.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
+    return r;                                                                                           \
+  }                                                                                                     \
+  friend Rational operator op(Rational&& a, const Rational& b) {                                       \
+    fn(a.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
+    return std::move(a);                                                                                \
+  }                                                                                                     \
+  friend Rational operator op(const Rational& a, Rational&& b) {                                       \
+    fn(b.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
+    return std::move(b);                                                                                \
+  }                                                                                                     \
+  friend Rational operator op(Rational&& a, Rational&& b) {                                            \
+    fn(a.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
+    return std::move(a);                                                                                \
+  }                                                                                                     \
+  template <class I> requires std::is_integral_v<I> friend Rational operator op(const Rational& a, I b) { return a op Rational(b); } \
+  template <class I> requires std::is_integral_v<I> friend Rational operator op(Rational&& a, I b) { return std::move(a) op Rational(b); } \
+  template <class I> requires std::is_integral_v<I> friend Rational operator op(I a, const Rational& b) { return Rational(a) op b; } \
+  template <class I> requires std::is_integral_v<I> friend Rational operator op(I a, Rational&& b) { return Rational(a) op std::move(b); } \
+  template <class T, class U> friend Rational operator op(const Rational& a, const __gmp_expr<T, U>& b) { return a op Rational(b); } \
+  template <class T, class U> friend Rational operator op(const __gmp_expr<T, U>& a, const Rational& b) { return Rational(a) op b; } \
+  template <class T, class U> friend Rational operator op(Rational&& a, const __gmp_expr<T, U>& b) { return std::move(a) op Rational(b); } \
+  template <class T, class U> friend Rational operator op(const __gmp_expr<T, U>& a, Rational&& b) { return Rational(a) op std::move(b); }
+  SW_RATIONAL_OP(+, mpq_add)
+  SW_RATIONAL_OP(-, mpq_sub)
+  SW_RATIONAL_OP(*, mpq_mul)
+  SW_RATIONAL_OP(/, mpq_div)
+#undef SW_RATIONAL_OP
+  friend Rational operator-(const Rational& a) {
+    Rational r;
+    mpq_neg(r.get_mpq_t(), a.get_mpq_t());
+    return r;
+  }
+  friend Rational operator-(Rational&& a) {
+    mpq_neg(a.get_mpq_t(), a.get_mpq_t());
+    return std::move(a);
+  }
+};
 class Interval;  // core/interval.hpp
 
 namespace num {
