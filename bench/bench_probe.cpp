@@ -152,10 +152,10 @@ BENCHMARK_MAIN();
 // What the app pays to (re-)record a 10^6-step trace through the catalog: recorder + result.
 static void BM_catalog_record_1M_steps(benchmark::State& state) {
   const sw::Algorithm& alg = sw::find_algorithm("dda-line");
-  const sw::Json input = sw::Json::parse(R"({"p0":[0.25,0.5],"p1":[499999.75,123456.5]})");
+  const sw::Run run = alg.open(sw::Json::parse(R"({"p0":[0.25,0.5],"p1":[499999.75,123456.5]})"), sw::Numeric::f64);
   std::size_t steps = 0;
   for (auto _ : state) {
-    sw::Recorded rec = alg.record(input, sw::Numeric::f64);
+    sw::Recorded rec = run.record();
     steps += rec.trace->size();
   }
   state.counters["steps"] = static_cast<double>(steps) / static_cast<double>(state.iterations());

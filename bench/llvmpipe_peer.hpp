@@ -282,7 +282,7 @@ inline CatalogComparison compare_catalog(Llvmpipe& gl, const std::vector<Group>&
     std::map<Pixel, std::pair<int, int>> both;  // llvmpipe, ours
     for (const auto& [p, c] : covered[g]) both[p].first = c;
     try {
-      const Json result = alg->run(Json{{"triangle", tri}}, numeric);
+      const Json result = (*alg).open(Json{{"triangle", tri}}, numeric).run();
       for (const auto& px : result.at("pixels")) ++both[Pixel{px.at(0).get<std::int64_t>(), px.at(1).get<std::int64_t>()}].second;
     } catch (const std::exception& e) {
       if (out.errors++ == 0) out.first_error = e.what();

@@ -7,6 +7,7 @@
 #include <sstream>
 #include "catalog.hpp"
 #include "scene_command.hpp"  // `stepwise scene check`
+#include "output.hpp"
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
 #include "bench_plot.hpp"      // visualizer/: `stepwise bench --plot`
@@ -162,11 +163,9 @@ int main(int argc, char** argv) {
     }
     if (*trace) {
       const Algorithm& alg = find_algorithm(alg_id);
-      const Numeric n = parse_numeric_for(alg, numeric);
-      const Json input = read_input_arg(input_arg);
-      alg.validate(input, n);
-      check_budget(alg, input, n, budget);
-      write_output(out_path, budget.max_output, [&](std::ostream& os) { write_trace(alg, n, input, os); });
+      const Run run = alg.open(read_input_arg(input_arg), parse_numeric_for(alg, numeric));
+      run.check_budget(budget);
+      write_output(out_path, budget.max_output, [&](std::ostream& os) { write_trace(run, os); });
       if (!out_path.empty() && out_path != "-") std::cerr << "stepwise: wrote trace to " << out_path << '\n';
       return 0;
     }

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <regex>
 #include "png.hpp"
-#include "trace_io.hpp"
+#include "output.hpp"
 #include "tracer/plan.hpp"
 #include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"

@@ -1,25 +1,73 @@
 #include "catalog.hpp"
 #include <algorithm>
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+#include <tuple>
 
 namespace sw {
 
-bool Algorithm::supports(Numeric n) const {
-  return std::find(numerics.begin(), numerics.end(), n) != numerics.end();
+namespace {
+
+// The families in the order of the course (and of `stepwise list`, which sorts each family's
+// algorithms by id); a family folder not named here sorts after them by name.
+constexpr std::array<std::string_view, 7> kFamilyOrder = {"lines", "curves", "rays", "fill", "spatial", "lighting", "tracer"};
+
+struct Registration {
+  Algorithm (*make)();
+  std::string family;
+};
+
+std::vector<Registration>& registrations() {
+  static std::vector<Registration> all;
+  return all;
+}
+
+std::size_t family_rank(std::string_view f) {
+  return std::size_t(std::find(kFamilyOrder.begin(), kFamilyOrder.end(), f) - kFamilyOrder.begin());
+}
+
+}  // namespace
+
+Registrar::Registrar(Algorithm (*make)(), const char* file) {
+  registrations().push_back({make, std::filesystem::path(file).parent_path().filename().string()});
 }
 
 const std::vector<Algorithm>& catalog() {
   static const std::vector<Algorithm> all = [] {
+    // The entries' family views point into registrations(), which is never changed again.
     std::vector<Algorithm> v;
-    register_lines(v);
-    register_curves(v);
-    register_rays(v);
-    register_fill(v);
-    register_spatial(v);
-    register_lighting(v);
-    register_tracer(v);
+    for (const Registration& r : registrations()) {
+      v.push_back(r.make());
+      v.back().family = r.family;
+    }
+    std::sort(v.begin(), v.end(), [](const Algorithm& a, const Algorithm& b) {
+      return std::tuple(family_rank(a.family), a.family, a.id) < std::tuple(family_rank(b.family), b.family, b.id);
+    });
+    for (std::size_t k = 0; k + 1 < v.size(); ++k)
+      if (v[k].id == v[k + 1].id) throw std::logic_error("two algorithms registered as " + std::string(v[k].id));
     return v;
   }();
   return all;
+}
+
+bool Algorithm::supports(Numeric n) const { return std::find(numerics.begin(), numerics.end(), n) != numerics.end(); }
+
+std::string Algorithm::modes_text() const {
+  std::string modes;
+  for (Numeric n : numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
+  return modes;
+}
+
+Numeric Algorithm::replay_mode() const {
+  for (Numeric n : {Numeric::exact, Numeric::reference, Numeric::f64})
+    if (supports(n)) return n;
+  return numerics.front();
+}
+
+Run Algorithm::open(const Json& input, Numeric n) const {
+  if (!supports(n)) throw InputError(std::string(id) + " does not run on '" + std::string(numeric_name(n)) + "' (it runs on: " + modes_text() + ")");
+  return Run(fn.open(*this, input), n);
 }
 
 const Algorithm& find_algorithm(std::string_view id) {
@@ -31,22 +79,17 @@ const Algorithm& find_algorithm(std::string_view id) {
 }
 
 Numeric parse_numeric_for(const Algorithm& alg, std::string_view name) {
-  std::string modes;
-  for (Numeric n : alg.numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
   auto n = parse_numeric(name);
   if (!n) throw InputError("unknown numeric mode '" + one_line(name, 60) + "' (known: float, double, int, filtered, exact, reference)");
   if (!alg.supports(*n))
-    throw InputError(std::string(alg.id) + " does not run on '" + std::string(name) + "' (it runs on: " + modes + ")");
+    throw InputError(std::string(alg.id) + " does not run on '" + std::string(name) + "' (it runs on: " + alg.modes_text() + ")");
   return *n;
 }
 
 std::string catalog_markdown() {
   std::string out = "| family | id | what | modes |\n|---|---|---|---|\n";
-  for (const Algorithm& a : catalog()) {
-    std::string modes;
-    for (Numeric n : a.numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));
-    out += "| " + std::string(a.family) + " | `" + std::string(a.id) + "` | " + std::string(a.summary) + " | " + modes + " |\n";
-  }
+  for (const Algorithm& a : catalog())
+    out += "| " + std::string(a.family) + " | `" + std::string(a.id) + "` | " + std::string(a.summary) + " | " + a.modes_text() + " |\n";
   return out;
 }
 

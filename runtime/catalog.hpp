@@ -1,8 +1,7 @@
 // The algorithm catalog: the type-erased face of every algorithm, shared by the CLI, the
-// visualizer, the tests and the benchmarks. Each family registers its entries (lines.cpp, ...).
+// visualizer, the tests and the benchmarks. Each Spec registers itself in its own file with one
+// SW_REGISTER line (register.hpp); its family is the folder it is registered in (runtime/<family>/).
 #pragma once
-#include <functional>
-#include <memory>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -11,6 +10,7 @@
 #include "core/probe.hpp"
 #include "core/step.hpp"
 #include "input.hpp"
+#include "run.hpp"
 #include "views.hpp"
 
 namespace sw {
@@ -25,12 +25,6 @@ struct BenchRow {
   std::size_t fallbacks = 0;            // filtered mode: cases that needed the exact re-run
   std::size_t later_stage = 0;          // filtered mode: cases a later (slower) filter stage decided
   double max_error = 0;                 // family-defined (e.g. t error in ulps), 0 if none
-};
-
-// A recorded run: the steps (random access) and the result as written to JSON.
-struct Recorded {
-  std::unique_ptr<TraceView> trace;
-  Json result;
 };
 
 // An input value the user may drag or type on a view: a JSON pointer into the input, what it is,
@@ -52,47 +46,54 @@ struct Param {
   std::string help;          // the tooltip
 };
 
+struct Algorithm;
+// What make_algorithm<Spec> (register.hpp) gives an entry besides its facts: the functions that
+// need the Spec's types.
+struct SpecFunctions {
+  std::shared_ptr<const OpenInput> (*open)(const Algorithm&, const Json&);
+  Json (*canonical)(const Json& result);
+  std::vector<BenchRow> (*bench)(Numeric, int repeats, const std::string& only_set);
+  std::vector<std::string> (*bench_sets)();
+  std::size_t (*step_cost)(Numeric);
+};
+
 struct Algorithm {
   std::string_view id, family, summary;
   Listing listing;
   std::vector<View> views;         // the first is shown first (views.hpp)
   // The table view's rows: steps on these listing lines each start a row (empty: every step).
   std::vector<std::string_view> table_lines;
-  Sweep sweep;                     // optional: fills the image view
-  Sweep lobe;                      // optional: fills the lobe view (one row of directions)
+  SweepInfo sweep;                 // optional: fills the image view (Run::sweep)
+  SweepInfo lobe;                  // optional: fills the lobe view (Run::lobe)
+  bool outline = false;            // Run::outline gives the exact curve, drawn with the pixels
   std::vector<Param> params;       // optional: sliders
   // Algorithms of one non-empty group take the same input shape and can run side by side (the
   // app's "compare with" another algorithm): keys their examples share carry over.
   std::string_view compare_group;
-  Outline outline;                 // optional: the exact curve, drawn with the pixels
   std::vector<Handle> handles;
   std::vector<Numeric> numerics;  // the number types this algorithm runs on
   std::string example;            // a default input, as JSON text
-  // All of these validate the input first and throw InputError naming the problem.
-  std::function<void(const Json& input, Numeric)> validate;
-  std::function<Recorded(const Json& input, Numeric)> record;
-  // Writes one JSON line per step, then the line {"result":...}. Memory stays flat in the
-  // number of steps (the result itself is held once, as the algorithm's output).
-  std::function<void(const Json& input, Numeric, std::ostream& out)> stream;
-  std::function<Json(const Json& input, Numeric)> run;  // untraced
-  // run's result as one line, written as it is made (no Json of a large result is built).
-  std::function<void(const Json& input, Numeric, std::ostream& out)> run_to;
-  // An upper estimate of the steps a run takes (empty if the Spec gives none); the work budget.
-  std::function<std::size_t(const Json& input, Numeric)> estimate_steps;
-  // What one of those steps costs against the budget in a mode, where a mode's step is much dearer
-  // than a line step (measured, docs/cli.md); empty: 1.
-  std::function<std::size_t(Numeric)> step_cost;
-  // The independent exact oracle's result for this input (brute force, oracle/).
-  std::function<Json(const Json& input)> oracle;
+  SpecFunctions fn{};
+
+  // Parses the input once and returns the run handle in mode n; throws InputError naming the
+  // problem (bad input, or a mode this algorithm or this input cannot run in).
+  Run open(const Json& input, Numeric n) const;
+  // The same in the replay mode (`check`, the oracle): exact, else reference, else double.
+  Run open(const Json& input) const { return open(input, replay_mode()); }
+  Numeric replay_mode() const;
+
   // A result in the form the oracle states it (sorted, for results the oracle gives as a set).
-  std::function<Json(const Json& result)> canonical;
-  // Times the untraced algorithm on the family's seeded bench sets (or only_set, if not empty),
-  // against the exact mode.
-  std::function<std::vector<BenchRow>(Numeric, int repeats, const std::string& only_set)> bench;
+  Json canonical(const Json& result) const { return fn.canonical(result); }
+  // Times the untraced algorithm on its seeded bench sets (or only_set, if not empty), against
+  // the exact mode.
+  std::vector<BenchRow> bench(Numeric n, int repeats, const std::string& only_set) const { return fn.bench(n, repeats, only_set); }
   // The names of those sets, in order (makes the seeded inputs: call it off the UI thread).
-  std::function<std::vector<std::string>()> bench_sets;
+  std::vector<std::string> bench_sets() const { return fn.bench_sets(); }
+  // What one step costs against the work budget in mode n (measured, docs/cli.md): 1 for most.
+  std::size_t step_cost(Numeric n) const { return fn.step_cost(n); }
 
   bool supports(Numeric n) const;
+  std::string modes_text() const;  // "float, double, exact"
 };
 
 const std::vector<Algorithm>& catalog();
@@ -102,17 +103,14 @@ const Algorithm& find_algorithm(std::string_view id);
 Numeric parse_numeric_for(const Algorithm& alg, std::string_view name);
 
 // The README's algorithm table: one row per algorithm, grouped by family, with its modes.
+std::string catalog_markdown();
 // One JSON object per algorithm: id, family, what, modes and its example input (`list --json`).
 std::string catalog_jsonl();
-std::string catalog_markdown();
 
-// Families register themselves here (catalog.cpp calls each once, in this order).
-void register_lines(std::vector<Algorithm>& out);
-void register_curves(std::vector<Algorithm>& out);
-void register_fill(std::vector<Algorithm>& out);
-void register_rays(std::vector<Algorithm>& out);
-void register_spatial(std::vector<Algorithm>& out);
-void register_lighting(std::vector<Algorithm>& out);
-void register_tracer(std::vector<Algorithm>& out);
+// The registrar (SW_REGISTER in register.hpp): adds an entry at start-up. `file` is the Spec's
+// source file; its folder names the family.
+struct Registrar {
+  Registrar(Algorithm (*make)(), const char* file);
+};
 
 }  // namespace sw

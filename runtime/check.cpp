@@ -268,8 +268,8 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     Numeric replay_mode = mode == Numeric::integer ? Numeric::integer : alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
     if (!alg.supports(replay_mode) && mode != Numeric::integer && alg.supports(Numeric::f64)) replay_mode = Numeric::f64;
     if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
-    alg.validate(input, replay_mode);
-    check_budget(alg, input, replay_mode, budget);
+    const Run run = alg.open(input, replay_mode);
+    run.check_budget(budget);
     const Tolerance tol{mode_tolerance(mode), !decisions_only};
     const bool rounded = tol.rel > 0 && mode != Numeric::reference;
     auto diverged = [&](const std::string& where, const std::string& what) {
@@ -302,7 +302,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     });
     std::ostream replay(&sink);
     replay.exceptions(std::ios::badbit);  // let Diverged and InputError through the stream
-    alg.stream(input, replay_mode, replay);
+    run.stream(replay);
 
     auto last = next_line();
     if (last) bounded(*last);
@@ -312,7 +312,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     }
     if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
     if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
-    const Json oracle = alg.oracle(input);
+    const Json oracle = run.oracle();
     if (auto d = value_diff(alg.canonical(oracle), alg.canonical((*last)["result"]), tol, false, "result")) throw diverged("result", *d);
     rep.steps = i;
     rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::reference ? "reference" : replay_mode == Numeric::f64 ? "double replay and its oracle" : "exact oracle") +

@@ -3,7 +3,7 @@
 #include <stb_image_write.h>
 #include <memory>
 #include "input.hpp"
-#include "trace_io.hpp"
+#include "output.hpp"
 
 namespace sw {
 

@@ -1,9 +1,22 @@
-// The Spec concept: what make_algorithm (adapter.hpp) needs of an algorithm's Spec. Besides the
-// required members, a Spec may define optional hooks; it names the ones it defines in
+// The Spec concept: what make_algorithm (register.hpp) needs of an algorithm's Spec. A Spec provides:
+//   using Algo = <the listing struct>;
+//   static constexpr std::array<View, N> views;              // what the visualizer draws
+//   static constexpr std::array<Numeric, N> numerics;
+//   static inline const std::string example;                 // default input, JSON text
+//   struct Input;  struct Output (with ==);
+//   static Input parse(const Json&);                         // validates, throws InputError
+//   template <class Num> static auto prepare(const Input&);  // inputs converted to Num
+//   template <class Num, class Probe> static Output compute(const Prepared&, Probe&);
+//   static Json to_json(const Output&);
+//   static std::size_t ops(const Output&);                   // output units, for ns per op
+//   static Output oracle(const Input&);                      // independent exact result
+//   static std::vector<BenchSet<Input>> bench_sets();        // seeded
+// Its family is the folder its file registers it in (SW_REGISTER). Besides these, a Spec may
+// define optional hooks; it names the ones it defines in
 //   static constexpr std::array hooks{Hook::handles, Hook::error, ...};
 // and the concept holds the names against the definitions both ways. A misspelt hook, or one with
 // the wrong signature, is then a compile error ("names a hook it does not define") instead of a
-// hook silently ignored. The hooks' meanings are listed in adapter.hpp and sweep.hpp.
+// hook silently ignored. docs/hooks.md lists every hook and the Specs that define it.
 #pragma once
 #include <array>
 #include <optional>
@@ -35,8 +48,9 @@ enum class Hook : std::uint8_t {
                    // lobe_angles(const Input&) and lobe_input(Json, const Input&, const SweepGrid&, int)
   params,          // static std::vector<Param> params()
   compare_group,   // static constexpr std::string_view compare_group
+  admit,           // static void admit(const Input&, Numeric): throws InputError if the input cannot run in that mode
 };
-inline constexpr std::size_t kHookCount = 18;
+inline constexpr std::size_t kHookCount = 19;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -77,6 +91,7 @@ template <class S> constexpr bool defines_hook(Hook h) {
       };
     case Hook::params: return requires { { S::params() } -> std::same_as<std::vector<Param>>; };
     case Hook::compare_group: return requires { { S::compare_group } -> std::convertible_to<std::string_view>; };
+    case Hook::admit: return requires(const In& in, Numeric n) { S::admit(in, n); };
   }
   return false;
 }
@@ -95,13 +110,12 @@ concept AlgorithmSpec = requires {
   typename S::Output;
   { S::Algo::id } -> std::convertible_to<std::string_view>;
   { S::Algo::listing() } -> std::same_as<Listing>;
-  { S::family } -> std::convertible_to<std::string_view>;
   S::views.size();
   S::numerics.size();
   { S::example } -> std::convertible_to<std::string>;
   S::bench_sets();
-} && requires(const Json& j, Numeric n, const typename S::Input& in, const typename S::Output& o) {
-  { S::parse(j, n) } -> std::same_as<typename S::Input>;
+} && requires(const Json& j, const typename S::Input& in, const typename S::Output& o) {
+  { S::parse(j) } -> std::same_as<typename S::Input>;
   { S::to_json(o) } -> std::convertible_to<Json>;
   { S::ops(o) } -> std::convertible_to<std::size_t>;
   { S::oracle(in) } -> std::same_as<typename S::Output>;

@@ -1,34 +1,18 @@
-// The view hooks a Spec may declare, turned into the type-erased fields of views.hpp. adapter.hpp
-// includes this last; its make_algorithm calls fill_view_hooks<Spec>. Optional Spec members:
-//   static constexpr std::array table_lines{"start"sv, ...};  // listing line names: table rows
+// The image and lobe views' sweeps: a Spec run untraced over a grid of inputs made from one parsed
+// input (the run handle's, register.hpp). The Spec's optional sweep hooks (spec.hpp):
 //   template <class Num> static auto sweeper(const Input& base, const SweepGrid&);  // returns
 //       f(i, j, Prepared& p), which sets what varies at sample (i, j) in p = prepare<Num>(base)
 //   static float sweep_value(const Output&);                  // NaN for none (a miss)
-//   static std::optional<std::array<double, 2>> sweep_marker(const Input&);
-//   static Json sweep_input(Json input, const Input&, const SweepGrid&, int i, int j);  // sample (i, j)
-//   static constexpr std::string_view sweep_caption;
-//   static constexpr bool sweep_shaded = true;  // values are intensities in [0, 1]
 //   template <class Num> static auto lobe_sweeper(const Input& base, const SweepGrid&);  // the lobe
 //       view's sweep: sample (i, 0) is the direction at angle g.x(i) degrees (sweep_value as above)
-//   static std::optional<std::array<double, 2>> lobe_angles(const Input&);  // Sweep::angles
-//   static Json lobe_input(Json input, const Input&, const SweepGrid&, int i);  // sample i
-//   static std::vector<Param> params();                       // sliders (catalog.hpp)
-//   static constexpr std::string_view compare_group;          // Algorithm::compare_group
-//   static std::vector<Polyline2> outline(const Input&, const Rect2& window, double cell);
 #pragma once
 #include <limits>
 #include <optional>
 #include <tuple>
 #include <type_traits>
-#include "adapter.hpp"
+#include "modes.hpp"
 
 namespace sw {
-
-template <class Spec> constexpr bool table_lines_exist() {
-  for (std::string_view name : Spec::table_lines)
-    if (!Spec::Algo::listing().find(name)) return false;
-  return true;
-}
 
 template <class Spec, class N> using SweepPrepared = decltype(Spec::template prepare<N>(std::declval<const typename Spec::Input&>()));
 
@@ -78,10 +62,9 @@ template <class Spec, class Which, class... S> struct CertifiedSweep<Spec, Which
   }
 };
 
-// Runs Spec untraced over the grid (see Sweep::run): the input is prepared once per number type
-// and the Spec's sweeper (Which) changes what varies, sample by sample.
-template <class Spec, class Which> void run_sweep(const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) {
-  const typename Spec::Input base = Spec::parse(j, n);
+// Runs Spec untraced over the grid (Run::sweep): the input is prepared once per number type and
+// the Spec's sweeper (Which) changes what varies, sample by sample.
+template <class Spec, class Which> void run_sweep(const typename Spec::Input& base, Numeric n, const SweepGrid& g, std::vector<float>& out) {
   out.assign(static_cast<std::size_t>(std::max(g.w, 0)) * static_cast<std::size_t>(std::max(g.h, 0)),
              std::numeric_limits<float>::quiet_NaN());
   auto each = [&](auto&& value) {
@@ -106,32 +89,6 @@ template <class Spec, class Which> void run_sweep(const Json& j, Numeric n, cons
     });
     return 0;
   });
-}
-
-template <class Spec> void fill_view_hooks(Algorithm& a) {
-  if constexpr (names_hook<Spec>(Hook::table_lines)) {
-    static_assert(table_lines_exist<Spec>(), "table_lines names a line the listing does not have");
-    a.table_lines.assign(Spec::table_lines.begin(), Spec::table_lines.end());
-  }
-  if constexpr (names_hook<Spec>(Hook::sweeper)) {
-    a.sweep.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec, ImageSweep>(j, n, g, out); };
-    if constexpr (names_hook<Spec>(Hook::sweep_marker))
-      a.sweep.marker = [](const Json& j) { return Spec::sweep_marker(Spec::parse(j, Numeric::exact)); };
-    if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
-    if constexpr (names_hook<Spec>(Hook::sweep_shaded)) a.sweep.shaded = Spec::sweep_shaded;
-    if constexpr (names_hook<Spec>(Hook::sweep_input))
-      a.sweep.sample = [](const Json& j, const SweepGrid& g, int x, int y) { return Spec::sweep_input(j, Spec::parse(j, Numeric::exact), g, x, y); };
-  }
-  if constexpr (names_hook<Spec>(Hook::lobe)) {
-    a.lobe.run = [](const Json& j, Numeric n, const SweepGrid& g, std::vector<float>& out) { run_sweep<Spec, LobeSweep>(j, n, g, out); };
-    a.lobe.angles = [](const Json& j) { return Spec::lobe_angles(Spec::parse(j, Numeric::exact)); };
-    a.lobe.sample = [](const Json& j, const SweepGrid& g, int x, int) { return Spec::lobe_input(j, Spec::parse(j, Numeric::exact), g, x); };
-    a.lobe.shaded = true;
-  }
-  if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
-  if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;
-  if constexpr (names_hook<Spec>(Hook::outline))
-    a.outline = [](const Json& j, const Rect2& w, double cell) { return Spec::outline(Spec::parse(j, Numeric::exact), w, cell); };
 }
 
 }  // namespace sw

@@ -1,10 +1,9 @@
-// What an algorithm declares for the visualizer's views, type-erased: the view kinds, the table
-// view's rows, the sweep that fills image views and the exact curve drawn under the pixels.
-// Specs fill these through make_algorithm (adapter.hpp, sweep.hpp); the visualizer reads only these.
+// What an algorithm declares for the visualizer's views: the view kinds, the sweep grid that fills
+// image views and what a sweep offers. Specs declare them (register.hpp fills the entry); the run
+// handle (run.hpp) computes them.
 #pragma once
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -47,23 +46,18 @@ struct SweepGrid {
   friend bool operator==(const SweepGrid&, const SweepGrid&) = default;
 };
 
-struct Sweep {
-  // Runs the algorithm untraced at every sample, no JSON per sample: out[j * w + i] is the
-  // Spec's value there (a ray's t), NaN for none (a miss). Exact mode decides through the filter
-  // stages, whose results equal exact. Throws InputError for bad input.
-  std::function<void(const Json& input, Numeric, const SweepGrid&, std::vector<float>& out)> run;
-  // Where the input itself lies in the frame (the input ray's origin), if the Spec says.
-  std::function<std::optional<std::array<double, 2>>(const Json& input)> marker;
-  // Sample (i, j)'s input as JSON, as the sweep ran it (the app opens it on a click).
-  std::function<Json(const Json& input, const SweepGrid&, int i, int j)> sample;
-  std::string_view caption;  // what a sample is, for the view's legend
-  // The lobe view's sweep only: the angles in degrees (in its grid's x) of the input's light and, if
-  // it lies in the swept plane, of its eye (NaN if not).
-  std::function<std::optional<std::array<double, 2>>(const Json& input)> angles;
+// What an algorithm's sweep (the image view's grid, or the lobe view's row of directions) offers;
+// the values come from Run::sweep / Run::lobe.
+struct SweepInfo {
+  bool present = false;  // the algorithm has this sweep
   // The values are intensities in [0, 1] (a shaded picture), not distances along a ray: the view
   // shows them grey and counts a difference over 1/255 from the reference as a disagreement.
   bool shaded = false;
-  explicit operator bool() const { return bool(run); }
+  bool marker = false;   // Run::sweep_marker: where the input itself lies in the frame
+  bool sample = false;   // Run::sweep_sample / lobe_sample: a sample's input as JSON (a click opens it)
+  bool angles = false;   // Run::lobe_angles: the light's and the eye's angles in the swept plane
+  std::string_view caption;  // what a sample is, for the view's legend
+  explicit operator bool() const { return present; }
 };
 
 // A world-coordinate window, and polylines in it.
@@ -71,8 +65,5 @@ struct Rect2 {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 using Polyline2 = std::vector<std::array<double, 2>>;
-// The exact curve of the input, from its definition (not from the trace), over `window`, sampled
-// about every `cell` world units.
-using Outline = std::function<std::vector<Polyline2>(const Json& input, const Rect2& window, double cell)>;
 
 }  // namespace sw

@@ -64,28 +64,28 @@ TEST_CASE("catalog: every listing line is reached by a step of the examples and 
     inputs.push_back(Json::parse(alg.example));
     std::size_t ran = 0;
     for (const Json& in : inputs) {
+      std::optional<Run> run;
       try {
-        alg.validate(in, n);
+        run.emplace(alg.open(in, n));
       } catch (const InputError&) {
         continue;  // another algorithm's input in the family corpus
       }
-      const Recorded rec = alg.record(in, n);
+      const Recorded rec = run->record();
       ++ran;
-      if (alg.estimate_steps) CHECK(rec.trace->size() <= alg.estimate_steps(in, n));
+      if (const auto estimate = run->estimate_steps()) CHECK(rec.trace->size() <= *estimate);
       for (std::size_t s = 0; s < rec.trace->size(); ++s)
         if (rec.trace->at(s).scope == 0) reached.insert(rec.trace->at(s).line);  // nested steps are the callee's lines
     }
     CHECK(ran > 0);
-    if (alg.estimate_steps)
-      for (Numeric m : alg.numerics) {  // rounded modes may take other paths
-        const Json example = Json::parse(alg.example);
-        try {
-          alg.validate(example, m);
-        } catch (const InputError&) {
-          continue;  // an example the int mode does not take (fractions)
-        }
-        CHECK(alg.record(example, m).trace->size() <= alg.estimate_steps(example, m));
+    for (Numeric m : alg.numerics) {  // rounded modes may take other paths
+      std::optional<Run> run;
+      try {
+        run.emplace(alg.open(Json::parse(alg.example), m));
+      } catch (const InputError&) {
+        continue;  // an example the int mode does not take (fractions)
       }
+      if (const auto estimate = run->estimate_steps()) CHECK(run->record().trace->size() <= *estimate);
+    }
     for (std::uint32_t id = 1; id <= alg.listing.lines.size(); ++id) {
       const std::string_view name = alg.listing.lines[id - 1].name;
       INFO("line " << id << " (" << name << ")");
@@ -104,7 +104,7 @@ TEST_CASE("catalog: declarations are well formed", "[catalog]") {
     CHECK(!alg.numerics.empty());
     std::set<std::string_view> names;
     for (const ListingLine& l : alg.listing.lines) CHECK(names.insert(l.name).second);
-    CHECK_NOTHROW(alg.validate(Json::parse(alg.example), alg.numerics.front()));
+    CHECK_NOTHROW((void)alg.open(Json::parse(alg.example), alg.numerics.front()));
   }
 }
 
@@ -122,11 +122,11 @@ TEST_CASE("catalog: check accepts every algorithm's own exact, reference and int
       INFO(alg.id << " " << numeric_name(n));
       std::stringstream trace;
       try {
-        alg.validate(Json::parse(alg.example), n);
+        (void)alg.open(Json::parse(alg.example), n);
       } catch (const InputError&) {
         continue;  // the example is not this mode's input (fractions in int mode)
       }
-      write_trace(alg, n, Json::parse(alg.example), trace);
+      write_trace(alg.open(Json::parse(alg.example), n), trace);
       const CheckReport rep = check_trace(trace, false);
       INFO(rep.message);
       if (n == Numeric::exact || n == Numeric::reference || n == Numeric::integer) CHECK(rep.status == 0);

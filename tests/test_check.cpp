@@ -12,7 +12,7 @@ namespace {
 
 std::vector<Json> trace_lines(const char* alg, const char* input, Numeric n) {
   std::stringstream s;
-  write_trace(find_algorithm(alg), n, Json::parse(input), s);
+  write_trace(find_algorithm(alg).open(Json::parse(input), n), s);
   std::vector<Json> out;
   std::string line;
   while (std::getline(s, line)) out.push_back(Json::parse(line));

@@ -33,14 +33,14 @@ TEST_CASE("trace formats: the JSONL stream and the Recorder agree on every step 
       INFO(alg.id << " " << numeric_name(n));
       const Json input = Json::parse(alg.example);
       try {
-        alg.validate(input, n);
+        (void)alg.open(input, n);
       } catch (const InputError&) {
         continue;  // e.g. int mode and a fractional example
       }
-      const Recorded rec = alg.record(input, n);
+      const Recorded rec = alg.open(input, n).record();
       const TraceView& t = *rec.trace;
       std::ostringstream out;
-      alg.stream(input, n, out);
+      alg.open(input, n).stream(out);
       std::istringstream lines(out.str());
       std::string line;
       std::size_t s = 0;

@@ -74,7 +74,7 @@ TEST_CASE("probe: check reads colour and list variables and refuses malformed on
   // A dda-line trace with one variable added: well formed (exit 1, not recorded by the algorithm)
   // or malformed (exit 2).
   std::stringstream s;
-  write_trace(find_algorithm("dda-line"), Numeric::exact, Json::parse(R"({"p0":[0,0],"p1":[3,1]})"), s);
+  write_trace(find_algorithm("dda-line").open(Json::parse(R"({"p0":[0,0],"p1":[3,1]})"), Numeric::exact), s);
   std::vector<Json> lines;
   for (std::string l; std::getline(s, l);) lines.push_back(Json::parse(l));
   auto check_with = [&](const char* var) {

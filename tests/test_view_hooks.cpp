@@ -37,12 +37,12 @@ TEST_CASE("view hooks: marching squares on x^2 + y^2 - 25 stays within 1e-3 of t
 
 TEST_CASE("view hooks: implicit-curve and circle-midpoint outline their exact circles", "[views][outline]") {
   const Json implicit = parse_json_text(R"({"P":[[1,2,0],[1,0,2],[-25,0,0]],"start":[-5,0],"max_steps":100})", "t");
-  check_on_circle(find_algorithm("implicit-curve").outline(implicit, {-8, -8, 8, 8}, 0.05), 0, 0, 5, 1e-3);
+  check_on_circle(find_algorithm("implicit-curve").open(implicit).outline({-8, -8, 8, 8}, 0.05), 0, 0, 5, 1e-3);
   const Json circle = parse_json_text(R"({"c":[3,-2],"r":40})", "t");
-  check_on_circle(find_algorithm("circle-midpoint").outline(circle, {-60, -60, 60, 60}, 0.5), 3, -2, 40, 1e-2);
+  check_on_circle(find_algorithm("circle-midpoint").open(circle).outline({-60, -60, 60, 60}, 0.5), 3, -2, 40, 1e-2);
   // Zoomed far in on a large circle, the outline is still on it (a chord would not be).
   const Json big = parse_json_text(R"({"c":[0,0],"r":4000000})", "t");
-  const auto lines = find_algorithm("circle-interior").outline(big, {3999990, -5, 4000010, 5}, 0.02);
+  const auto lines = find_algorithm("circle-interior").open(big).outline({3999990, -5, 4000010, 5}, 0.02);
   REQUIRE(!lines.empty());
   for (const auto& l : lines)
     for (const auto& p : l) CHECK(std::fabs(std::hypot(p[0], p[1]) - 4000000) <= 1e-3);
@@ -51,7 +51,7 @@ TEST_CASE("view hooks: implicit-curve and circle-midpoint outline their exact ci
 TEST_CASE("view hooks: the cubic's outline is y = P(x) on the plotted columns, the Bezier's ends at its end points", "[views][outline]") {
   for (const char* id : {"poly-forward-diff", "poly-horner"}) {
     const Json in = parse_json_text(R"({"coeffs":["1/64",0,"-3/2",2],"xs":-12,"xe":13})", "t");
-    const auto lines = find_algorithm(id).outline(in, {-100, -100, 100, 100}, 0.25);
+    const auto lines = find_algorithm(id).open(in).outline({-100, -100, 100, 100}, 0.25);
     REQUIRE(lines.size() == 1);
     CHECK(lines[0].front()[0] == -12);
     CHECK(lines[0].back()[0] == 12);
@@ -61,13 +61,13 @@ TEST_CASE("view hooks: the cubic's outline is y = P(x) on the plotted columns, t
       CHECK(std::fabs(p[1] - y.get_d()) <= 1e-12);
     }
     // Only the visible columns are sampled.
-    const auto part = find_algorithm(id).outline(in, {0, -100, 5, 100}, 0.25);
+    const auto part = find_algorithm(id).open(in).outline({0, -100, 5, 100}, 0.25);
     REQUIRE(part.size() == 1);
     CHECK(part[0].front()[0] == 0);
     CHECK(part[0].back()[0] == 5);
   }
   const Json b = parse_json_text(R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"n":6})", "t");
-  const auto lines = find_algorithm("bezier-forward-diff").outline(b, {0, 0, 1, 1}, 0.1);
+  const auto lines = find_algorithm("bezier-forward-diff").open(b).outline({0, 0, 1, 1}, 0.1);
   REQUIRE(lines.size() == 1);
   CHECK(lines[0].front() == std::array<double, 2>{0.5, 0});
   CHECK(lines[0].back() == std::array<double, 2>{12, 6});
@@ -84,12 +84,12 @@ TEST_CASE("view hooks: every sample of a ray sweep is what the CLI computes on t
     for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::exact}) {
       SweepGrid g{9, 7, 0.1, -0.2, 0.21, 0.27, n == Numeric::f32 ? Numeric::f32 : Numeric::f64};
       std::vector<float> out;
-      alg.sweep.run(input, n, g, out);
+      alg.open(input, n).sweep(g, out);
       REQUIRE(out.size() == 63);
       for (int j = 0; j < g.h; ++j)
         for (int i = 0; i < g.w; ++i) {
-          const Json sample = alg.sweep.sample(input, g, i, j);
-          const Json r = alg.run(sample, n);
+          const Json sample = alg.open(input).sweep_sample(g, i, j);
+          const Json r = alg.open(sample, n).run();
           INFO(id << " " << numeric_name(n) << " sample " << sample.dump());
           CHECK(r["hit"].get<bool>() == !std::isnan(out[std::size_t(j) * g.w + i]));
         }
@@ -100,10 +100,10 @@ TEST_CASE("view hooks: every sample of a ray sweep is what the CLI computes on t
 TEST_CASE("view hooks: the middle sample of a window centred on the marker is the input itself", "[views][sweep]") {
   const Algorithm& alg = find_algorithm("ray-triangle-mt");
   const Json in = parse_json_text(alg.example, "example");
-  const auto m = alg.sweep.marker(in);
+  const auto m = alg.open(in).sweep_marker();
   REQUIRE(m);
   const SweepGrid g{5, 5, (*m)[0], (*m)[1], 1e-3, 1e-3, Numeric::f64};
-  const Json s = alg.sweep.sample(in, g, 2, 2);
+  const Json s = alg.open(in).sweep_sample(g, 2, 2);
   for (int k = 0; k < 3; ++k) {
     CHECK(parse_rational(s["ray"]["o"][k], "o") == parse_rational(in["ray"]["o"][k], "o"));
     CHECK(parse_rational(s["ray"]["d"][k], "d") == parse_rational(in["ray"]["d"][k], "d"));
@@ -134,7 +134,7 @@ TEST_CASE("view hooks: every sample of a shading sweep is the model on the spher
     for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::reference}) {
       SweepGrid g{9, 7, 0.05, -0.1, 0.25, 0.3, n == Numeric::f32 ? Numeric::f32 : Numeric::f64};
       std::vector<float> out;
-      alg.sweep.run(input, n, g, out);
+      alg.open(input, n).sweep(g, out);
       REQUIRE(out.size() == 63);
       std::size_t on = 0;
       for (int j = 0; j < g.h; ++j)
@@ -147,9 +147,9 @@ TEST_CASE("view hooks: every sample of a shading sweep is the model on the spher
             continue;
           }
           ++on;
-          const Json sample = alg.sweep.sample(input, g, i, j);
+          const Json sample = alg.open(input).sweep_sample(g, i, j);
           CHECK(sample["n"][2].get<double>() > 0);
-          CHECK(v == static_cast<float>(alg.run(sample, n)["value"].get<double>()));
+          CHECK(v == static_cast<float>(alg.open(sample, n).run()["value"].get<double>()));
         }
       CHECK(on > 20);
     }

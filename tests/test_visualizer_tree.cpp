@@ -23,7 +23,7 @@ std::shared_ptr<const TraceModel> hand_trace() {
   const std::int64_t stack[] = {1};
   r->step(1, StepKind::visit).ilist("stack", stack).node(3, 2, lo, hi);
   Recorded rec{std::move(r), Json::object()};
-  return std::make_shared<TraceModel>(catalog().front(), Json::parse(catalog().front().example), Numeric::f64, std::move(rec));
+  return std::make_shared<TraceModel>(catalog().front().open(Json::parse(catalog().front().example), Numeric::f64), std::move(rec));
 }
 
 }  // namespace
@@ -67,7 +67,7 @@ TEST_CASE("tree view: a query shows the whole tree its nested build records, and
     INFO(id);
     const Algorithm& alg = find_algorithm(id);
     const Json input = Json::parse(alg.example);
-    Recorded rec = alg.record(input, Numeric::exact);
+    Recorded rec = alg.open(input, Numeric::exact).record();
     const TraceView& t = *rec.trace;
     // The nodes the nested build creates (scope 1), counted here from the trace itself.
     std::set<std::int64_t> built, visited;
@@ -82,7 +82,7 @@ TEST_CASE("tree view: a query shows the whole tree its nested build records, and
       }
     REQUIRE(built.size() > visited.size());
     REQUIRE(first_visit < t.size());
-    auto m = std::make_shared<TraceModel>(alg, input, Numeric::exact, std::move(rec));
+    auto m = std::make_shared<TraceModel>(alg.open(input, Numeric::exact), std::move(rec));
     const TreeDiagram d = build_tree_diagram(*m);
     CHECK(d.nodes.size() == built.size());
     for (std::int64_t v : visited) CHECK(d.find(v));
@@ -117,7 +117,8 @@ TEST_CASE("tree view: 10^4 nodes fit the canvas and draw headless (past 65536 ve
 TEST_CASE("trace model: a nested call's kept items end with the call, the caller's own last", "[visualizer][tree-view]") {
   const Algorithm& alg = find_algorithm("kd-traverse");
   const Json input = Json::parse(alg.example);
-  auto m = std::make_shared<TraceModel>(alg, input, Numeric::exact, alg.record(input, Numeric::exact));
+  const Run run = alg.open(input, Numeric::exact);
+  auto m = std::make_shared<TraceModel>(run, run.record());
   const TraceView& t = m->trace();
   std::size_t first_own = 0;  // the build's steps come first, then the traversal's own "build" step
   while (first_own < t.size() && t.at(first_own).scope != 0) ++first_own;

@@ -198,9 +198,9 @@ TEST_CASE("views image: a shaded float sweep differs from reference by over 1/25
   std::size_t brighter = 0, darker = 0;
   for (int j = 0; j < g.h; ++j)
     for (int i = 0; i < g.w; ++i) {
-      const Json s = alg.sweep.sample(input, g, i, j);
+      const Json s = alg.open(input).sweep_sample(g, i, j);
       const float ref = static_cast<float>(lighting_oracle::term("blinn-phong", lighting::DiffuseModel::lambert, vec(s["n"]), vec(input["l"]), vec(input["e"]), p).value.get_d());
-      const float flt = static_cast<float>(alg.run(s, Numeric::f32)["value"].get<double>());
+      const float flt = static_cast<float>(alg.open(s, Numeric::f32).run()["value"].get<double>());
       const std::size_t k = std::size_t(j) * g.w + i;
       INFO("sample (" << i << ", " << j << ")");
       CHECK(std::fabs(img.exact[k] - ref) <= 1e-6f);
@@ -217,7 +217,7 @@ TEST_CASE("views image: a float ray-triangle sweep disagrees with exact exactly 
   const Algorithm& alg = find_algorithm("ray-triangle-mt");
   const Json input = parse_json_text(kEdgeRay, "t");
   const auto m = record_model(alg, input, Numeric::f32);
-  const auto marker = alg.sweep.marker(input);
+  const auto marker = alg.open(input).sweep_marker();
   REQUIRE(marker);
   // 41 x 41 rays around the input ray, 2e-6 of the frame apart: across float's error band.
   const SweepGrid g{41, 41, (*marker)[0], (*marker)[1], 2e-6, 2e-6, Numeric::f32};
@@ -229,12 +229,12 @@ TEST_CASE("views image: a float ray-triangle sweep disagrees with exact exactly 
   std::size_t disagree = 0, false_hits = 0, hits = 0;
   for (int j = 0; j < g.h; ++j)
     for (int i = 0; i < g.w; ++i) {
-      const Json s = alg.sweep.sample(input, g, i, j);
+      const Json s = alg.open(input).sweep_sample(g, i, j);
       Vec3<Rational> o, d;
       for (int k = 0; k < 3; ++k) o[k] = parse_rational(s["ray"]["o"][k], "o"), d[k] = parse_rational(s["ray"]["d"][k], "d");
       for (int k = 0; k < 3; ++k) REQUIRE(num::to_rational(double(float(o[k].get_d()))) == o[k]);  // float rays
       const bool exact = oracle::ray_triangle(o, d, tri).hit;
-      const bool flt = alg.run(s, Numeric::f32)["hit"].get<bool>();
+      const bool flt = alg.open(s, Numeric::f32).run()["hit"].get<bool>();
       const std::size_t k = std::size_t(j) * g.w + i;
       INFO("sample (" << i << ", " << j << ")");
       CHECK(exact == !std::isnan(img.exact[k]));
@@ -299,7 +299,7 @@ TEST_CASE("views image: the headless render paints hits, misses and each disagre
   const auto r = ic->sample_rect(g.w / 4, g.h / 2);
   const ImVec2 at(std::floor((r[0] + r[2]) / 2), std::floor((r[1] + r[3]) / 2));
   const int i = int((at.x - ic->sample_rect(0, 0)[0]) / (r[2] - r[0])), j = int((at.y - ic->sample_rect(0, 0)[1]) / (r[3] - r[1]));
-  const Json expected = app.model(0)->algorithm().sweep.sample(app.model(0)->input(), g, i, j);
+  const Json expected = app.model(0)->run().sweep_sample(g, i, j);
   host.set_mouse(at, true);
   host.render(1);
   host.set_mouse(at, false);

@@ -15,7 +15,7 @@ AccuracyRun::~AccuracyRun() {
 
 void AccuracyRun::work(int repeats) {
   try {
-    std::vector<std::string> names = alg_->bench_sets ? alg_->bench_sets() : std::vector<std::string>{};
+    std::vector<std::string> names = alg_->bench_sets();
     std::string set;
     {
       std::lock_guard lock(mu_);

@@ -99,8 +99,6 @@ class App {
  private:
   // Records the run(s); on failure returns the message and leaves the open run as it was.
   std::string load(const Algorithm& alg, const Json& input, Numeric numeric, Comparison compare, bool keep_view);
-  // The input's errors for both runs (the other algorithm's on its carried input); empty if none.
-  std::string validate_runs(const Json& input) const;
   bool rerun_with_input(const Json& input);  // keeps the relative timeline position
   void apply_input(const Json& input);        // from the edit fields; errors go to edit_error_
   void rerun_numerics(Numeric numeric, Comparison compare);

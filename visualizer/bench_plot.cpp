@@ -3,7 +3,7 @@
 #include "headless.hpp"
 #include "image_io.hpp"
 #include "render_command.hpp"  // parse_frame_size
-#include "trace_io.hpp"
+#include "output.hpp"
 
 namespace sw::vis {
 namespace {

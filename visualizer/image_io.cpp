@@ -2,7 +2,7 @@
 #include <gif_lib.h>
 #include <string>
 #include <vector>
-#include "trace_io.hpp"
+#include "output.hpp"
 
 namespace sw::vis {
 

@@ -25,10 +25,11 @@ int SweepImage::disagreement(std::size_t k) const {
   return mode[k] > exact[k] ? 1 : -1;
 }
 
-SweepImage sweep_image(const TraceModel& m, SweepGrid grid, Sweep Algorithm::*which) {
+SweepImage sweep_image(const TraceModel& m, SweepGrid grid, bool lobe) {
   SweepImage img;
   const Algorithm& alg = m.algorithm();
-  const Sweep& sweep = alg.*which;
+  const SweepInfo& sweep = lobe ? alg.lobe : alg.sweep;
+  auto run = [&](const Run& r, std::vector<float>& out) { lobe ? r.lobe(grid, out) : r.sweep(grid, out); };
   grid.inputs = m.numeric() == Numeric::f32 ? Numeric::f32 : Numeric::f64;
   img.grid = grid;
   img.shaded = sweep.shaded;
@@ -37,13 +38,13 @@ SweepImage sweep_image(const TraceModel& m, SweepGrid grid, Sweep Algorithm::*wh
                       ? Numeric::reference : Numeric::exact;
   if (!sweep) return img;
   auto t0 = std::chrono::steady_clock::now();
-  sweep.run(m.input(), m.numeric(), grid, img.mode);
+  run(m.run(), img.mode);
   img.mode_ms = ms_since(t0);
   if (m.numeric() == img.reference) {
     img.exact = img.mode;
   } else {
     t0 = std::chrono::steady_clock::now();
-    sweep.run(m.input(), img.reference, grid, img.exact);
+    run(m.run().in(img.reference), img.exact);
     img.exact_ms = ms_since(t0);
   }
   for (std::size_t k = 0; k < img.mode.size(); ++k) {
@@ -60,8 +61,7 @@ ImageCanvas::~ImageCanvas() {
 }
 
 void ImageCanvas::focus(const TraceModel& m, std::size_t, double) {
-  const auto& marker = m.algorithm().sweep.marker;
-  const auto at = marker ? marker(m.input()) : std::nullopt;
+  const auto at = m.run().sweep_marker();
   if (!at) return;
   cx_ = (*at)[0], cy_ = (*at)[1];
   half_ = std::min(half_, kFocusHalf);
@@ -186,8 +186,8 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
         dl->AddCircle(ImVec2((r[0] + r[2]) / 2, (r[1] + r[3]) / 2), rad, d < 0 ? kSweepMissed : kSweepFalseHit, 16, 1.5f);
       }
   // The input itself.
-  if (in.model->algorithm().sweep.marker) {
-    if (const auto at = in.model->algorithm().sweep.marker(in.model->input())) {
+  {
+    if (const auto at = in.model->run().sweep_marker()) {
       const float x = origin_.x + float(((*at)[0] - grid.cx) / (grid.dx * grid.w) + 0.5) * size.x;
       const float y = origin_.y + float((grid.cy - (*at)[1]) / (grid.dy * grid.h) + 0.5) * size.y;
       dl->AddLine(ImVec2(x - 8, y), ImVec2(x + 8, y), theme::kHandleP0, 2.f);
@@ -235,10 +235,9 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
     const int i = std::clamp(int((io.MousePos.x - origin_.x) / size.x * grid.w), 0, grid.w - 1);
     const int j = std::clamp(int((io.MousePos.y - origin_.y) / size.y * grid.h), 0, grid.h - 1);
     const std::size_t k = std::size_t(j) * grid.w + i;
-    const auto& sample = in.model->algorithm().sweep.sample;
-    if (ImGui::IsItemDeactivated() && !moved_ && in.editable && sample) {  // a click: trace this sample
+    if (ImGui::IsItemDeactivated() && !moved_ && in.editable && in.model->algorithm().sweep.sample) {  // a click: trace this sample
       try {
-        ev.edit = sample(in.model->input(), grid, i, j);
+        ev.edit = in.model->run().sweep_sample(grid, i, j);
       } catch (const std::exception& e) {
         error_ = e.what();
       }
@@ -246,7 +245,7 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
     auto say = [](float v) { return std::isnan(v) ? std::string("miss") : "hit, t = " + std::to_string(v); };
     if (hovered)
       ImGui::SetTooltip("sample (%d, %d) at (%.6g, %.6g)\n%s: %s\nexact: %s%s", i, j, grid.x(i), grid.y(j), mode.c_str(), say(image_.mode[k]).c_str(),
-                        say(image_.exact[k]).c_str(), sample && in.editable ? "\nclick: trace this sample" : "");
+                        say(image_.exact[k]).c_str(), in.model->algorithm().sweep.sample && in.editable ? "\nclick: trace this sample" : "");
   }
   corner_label(dl, origin_, size, in.label);
   dl->PopClipRect();

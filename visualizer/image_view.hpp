@@ -34,7 +34,7 @@ struct SweepImage {
 // Sweeps m's algorithm on m's input over `grid` in m's number type and exactly; the grid's
 // samples are rounded to m's number type, so both see the same inputs. `which`: the image view's
 // sweep or the lobe view's. Throws InputError.
-SweepImage sweep_image(const TraceModel& m, SweepGrid grid, Sweep Algorithm::*which = &Algorithm::sweep);
+SweepImage sweep_image(const TraceModel& m, SweepGrid grid, bool lobe = false);
 
 class ImageCanvas final : public Canvas {
  public:

@@ -202,9 +202,11 @@ Lesson parse_lesson(const std::string& raw, const std::string& where) {
       const std::filesystem::path mesh = lesson.input["mesh"].get<std::string>();
       if (mesh.is_relative()) lesson.input["mesh"] = (std::filesystem::path(where).parent_path() / mesh).lexically_normal().string();
     }
-    lesson.algorithm->validate(lesson.input, lesson.numeric);
-    if (lesson.compare.other) lesson.compare.other->validate(carried_input(lesson.input, parse_json_text(lesson.compare.other->example, "example")), lesson.numeric);
-    else if (lesson.compare) lesson.algorithm->validate(lesson.input, *lesson.compare.numeric);
+    lesson.run.emplace(lesson.algorithm->open(lesson.input, lesson.numeric));
+    if (lesson.compare.other)
+      lesson.compare_run.emplace(lesson.compare.other->open(carried_input(lesson.input, parse_json_text(lesson.compare.other->example, "example")), lesson.numeric));
+    else if (lesson.compare)
+      lesson.compare_run.emplace(lesson.run->in(*lesson.compare.numeric));
     if (fm.count("show")) {
       at = fm["show"].second;
       lesson.show = parse_view(fm["show"].first);

@@ -44,6 +44,8 @@ struct Lesson {
   Json input;
   Numeric numeric = Numeric::exact;
   Comparison compare;              // a second number type, or another model, shown side by side
+  // The input opened (parsed once) for the lesson's run, and for the compared run if any.
+  std::optional<Run> run, compare_run;
   std::size_t start_step = 0;      // where the timeline starts
   std::size_t start_step_line = 0;
   bool focus = false;              // "view: step": zoom in on the start step, not the whole trace

@@ -36,13 +36,10 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
 
   std::vector<std::shared_ptr<const TraceModel>> runs;
   try {
-    runs.push_back(record_model(*lesson.algorithm, lesson.input, lesson.numeric, budget));
-    if (const Algorithm* other = lesson.compare.other)
-      runs.push_back(record_model(*other, carried_input(lesson.input, parse_json_text(other->example, "example")), lesson.numeric, budget));
-    else if (lesson.compare)
-      runs.push_back(record_model(*lesson.algorithm, lesson.input, *lesson.compare.numeric, budget));
+    runs.push_back(record_model(*lesson.run, budget));
+    if (lesson.compare_run) runs.push_back(record_model(*lesson.compare_run, budget));
     if (const Numeric q = quiz_numeric(lesson); q != lesson.numeric && !(lesson.compare.numeric == q && !lesson.compare.other))
-      runs.push_back(record_model(*lesson.algorithm, lesson.input, q, budget));  // the quiz's truth
+      runs.push_back(record_model(lesson.run->in(q), budget));  // the quiz's truth
   } catch (const InputError& e) {
     at(1, e.what());
     return out;

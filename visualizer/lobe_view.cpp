@@ -62,7 +62,7 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
     SweepGrid g;
     g.w = kDirections, g.h = 1, g.dx = 180.0 / (kDirections - 1), g.dy = 1;
     try {
-      lobe_ = sweep_image(*in.model, g, &Algorithm::lobe);
+      lobe_ = sweep_image(*in.model, g, true);
       error_.clear();
     } catch (const std::exception& e) {
       lobe_ = SweepImage{g, {}, {}};
@@ -104,7 +104,7 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
     dl->AddText(ImVec2(std::clamp(tip.x - 4, origin.x + 4, end.x - w - 4), tip.y - label_h - 2), col, label);
   };
   ray(0, theme::kLabel, "n", false);
-  const auto angles = alg.lobe.angles ? alg.lobe.angles(in.model->input()) : std::nullopt;
+  const auto angles = in.model->run().lobe_angles();
   if (angles && std::isfinite((*angles)[0])) {
     ray((*angles)[0], theme::kQ, "l", false);
     ray(-(*angles)[0], theme::kQ, "mirror", true);
@@ -146,7 +146,7 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
                       say(lobe_.exact[std::size_t(i)]).c_str(), in.editable && alg.lobe.sample ? "\nclick: trace this direction" : "");
     if (ImGui::IsItemClicked() && in.editable && alg.lobe.sample) {
       try {
-        ev.edit = alg.lobe.sample(in.model->input(), lobe_.grid, i, 0);
+        ev.edit = in.model->run().lobe_sample(lobe_.grid, i);
       } catch (const std::exception& e) {
         error_ = e.what();
       }

@@ -14,7 +14,7 @@ void PlotCanvas::load(const std::shared_ptr<const TraceModel>& m) {
   all_exact_.clear();
   if (m->numeric() != Numeric::exact && m->size() <= kMaxExactSteps && m->algorithm().supports(Numeric::exact)) {
     try {
-      exact_model_ = record_model(m->algorithm(), m->input(), Numeric::exact);
+      exact_model_ = record_model(m->run().in(Numeric::exact));
       exact_table_ = build_step_table(*exact_model_);
       // Rows are matched by index: only runs with the same rows and columns compare.
       if (exact_table_.columns == table_.columns && exact_table_.rows.size() == table_.rows.size()) all_exact_ = table_values(*exact_model_, exact_table_);

@@ -20,7 +20,7 @@ int run_quiz(const QuizOptions& o) {
   const Lesson lesson = load_lesson(o.lesson);
   Budget budget;
   budget.max_steps = o.max_steps;
-  const auto run = record_model(*lesson.algorithm, lesson.input, quiz_numeric(lesson), budget);
+  const auto run = record_model(lesson.run->in(quiz_numeric(lesson)), budget);
   const std::vector<Question> questions = quiz_questions(lesson, *run);
   if (o.list) {
     for (const Question& q : questions) {

@@ -13,8 +13,8 @@ void WorldRect::add(double x, double y) {
   x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
 }
 
-TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Recorded rec)
-    : alg_(&alg), input_(std::move(input)), numeric_(numeric), rec_(std::move(rec)) {
+TraceModel::TraceModel(Run run, Recorded rec) : run_(std::move(run)), rec_(std::move(rec)) {
+  const Algorithm& alg = run_.algorithm();
   bounds_ = {1, 1, 0, 0};  // empty
   // Where the declared 2D handles are, read from the input once; they are framed too (control
   // points may lie off the curve).
@@ -22,7 +22,7 @@ TraceModel::TraceModel(const Algorithm& alg, Json input, Numeric numeric, Record
     handles_.emplace_back();
     if (h.kind != Handle::Kind::point2) continue;
     try {
-      const Json& v = input_.at(Json::json_pointer(h.pointer));
+      const Json& v = run_.input().at(Json::json_pointer(h.pointer));
       if (v.is_array() && v.size() == 2) handles_.back() = std::array<double, 2>{parse_rational(v[0], h.label).get_d(), parse_rational(v[1], h.label).get_d()};
     } catch (const std::exception&) {
     }
@@ -244,12 +244,15 @@ std::optional<std::size_t> TraceModel::step_over(std::size_t from, bool forward)
   return std::nullopt;
 }
 
+std::shared_ptr<const TraceModel> record_model(const Run& run, const Budget& budget) {
+  run.check_budget(budget);
+  Recorded rec = run.record();
+  if (!rec.trace || rec.trace->size() == 0) throw InputError(std::string(run.algorithm().id) + ": the run recorded no steps");
+  return std::make_shared<const TraceModel>(run, std::move(rec));
+}
+
 std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric, const Budget& budget) {
-  alg.validate(input, numeric);
-  check_budget(alg, input, numeric, budget);
-  Recorded rec = alg.record(input, numeric);
-  if (!rec.trace || rec.trace->size() == 0) throw InputError(std::string(alg.id) + ": the run recorded no steps");
-  return std::make_shared<const TraceModel>(alg, input, numeric, std::move(rec));
+  return record_model(alg.open(input, numeric), budget);
 }
 
 }  // namespace sw::vis

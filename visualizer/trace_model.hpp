@@ -10,7 +10,6 @@
 #include <string_view>
 #include <vector>
 #include "catalog.hpp"
-#include "trace_io.hpp"
 
 namespace sw::vis {
 
@@ -41,11 +40,13 @@ inline constexpr std::uint32_t kNoStep = 0xffffffffu;
 
 class TraceModel {
  public:
-  TraceModel(const Algorithm& alg, Json input, Numeric numeric, Recorded rec);
+  TraceModel(Run run, Recorded rec);
 
-  const Algorithm& algorithm() const { return *alg_; }
-  const Json& input() const { return input_; }
-  Numeric numeric() const { return numeric_; }
+  // The run handle it was recorded from: the parsed input, for the views' sweeps and outline.
+  const Run& run() const { return run_; }
+  const Algorithm& algorithm() const { return run_.algorithm(); }
+  const Json& input() const { return run_.input(); }
+  Numeric numeric() const { return run_.numeric(); }
   const TraceView& trace() const { return *rec_.trace; }
   const Json& result() const { return rec_.result; }
   std::size_t size() const { return rec_.trace->size(); }
@@ -98,9 +99,7 @@ class TraceModel {
   static constexpr std::size_t kCheckpoint = 256;
   void apply_step(std::size_t step, std::vector<std::uint32_t>& latest) const;
 
-  const Algorithm* alg_;
-  Json input_;
-  Numeric numeric_;
+  Run run_;
   Recorded rec_;
   std::vector<PlotEvent> plots_;
   std::vector<PlotEvent> by_cell_;  // sorted by cell, for hover lookups
@@ -114,7 +113,9 @@ class TraceModel {
   std::vector<std::uint32_t> checkpoints_;       // names_.size() entries per checkpoint
 };
 
-// Records alg on input in numeric mode; throws InputError naming the problem.
+// Records the run, held to the budget; throws InputError naming the problem.
+std::shared_ptr<const TraceModel> record_model(const Run& run, const Budget& budget = {});
+// The same for an input not yet opened (one parse).
 std::shared_ptr<const TraceModel> record_model(const Algorithm& alg, const Json& input, Numeric numeric, const Budget& budget = {});
 
 }  // namespace sw::vis

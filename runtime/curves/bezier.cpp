@@ -3,7 +3,7 @@
 // Semantics: docs/curves/semantics.md.
 #include <bit>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "curves/bezier_de_casteljau.hpp"
 #include "curves/bezier_forward_diff.hpp"
 #include "curves/outlines.hpp"
@@ -24,7 +24,6 @@ struct BezierSpec {
   using Input = BezierInput;
   using Output = PixelsOutput;
   static constexpr std::int64_t kMaxCoord = std::int64_t{1} << 16, kMaxSegments = 1024;
-  static constexpr std::string_view family = "curves";
   static constexpr std::array views{View::plane2d, View::table};
   static constexpr std::array<std::string_view, 1> table_lines{"step"};  // one row per segment
   static std::vector<Polyline2> outline(const Input& in, const Rect2&, double cell) { return curves::bezier_outline(in.p, cell); }
@@ -49,7 +48,7 @@ struct BezierSpec {
     in.n = depth ? std::int64_t{1} << v : v;
     return in;
   }
-  static Input parse(const Json& j, Numeric) { return parse_pieces(j, "n", kMaxSegments, false); }
+  static Input parse(const Json& j) { return parse_pieces(j, "n", kMaxSegments, false); }
   static std::vector<Handle> handles() {
     std::vector<Handle> h;
     for (int i = 0; i < 4; ++i) h.push_back({"/bezier/" + std::to_string(i), Handle::Kind::point2, 8, "P" + std::to_string(i)});
@@ -109,7 +108,7 @@ struct BezierDeCasteljauSpec : BezierSpec {
   static constexpr std::int64_t kMaxDepth = 10;  // 1024 pieces, as bezier-forward-diff's bound
   static constexpr std::array<std::string_view, 1> table_lines{"leaf"};  // one row per chord
   static inline const std::string example = R"({"bezier":[[0.5,0],[3,"29/4"],[9.5,"-5/3"],[12,6]],"depth":3})";
-  static Input parse(const Json& j, Numeric) { return parse_pieces(j, "depth", kMaxDepth, true); }
+  static Input parse(const Json& j) { return parse_pieces(j, "depth", kMaxDepth, true); }
   template <class Num> static curves::BezierDepth<Num> prepare(const Input& in) {
     curves::BezierDepth<Num> b;
     for (int i = 0; i < 4; ++i) b.p[i] = to_num<Num>(in.p[i]);
@@ -124,11 +123,9 @@ struct BezierDeCasteljauSpec : BezierSpec {
   static std::vector<BenchSet<Input>> bench_sets() { return bench_sets_for(true); }
 };
 
-}  // namespace
+SW_REGISTER(BezierSpec);
+SW_REGISTER(BezierDeCasteljauSpec);
 
-void register_bezier(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<BezierSpec>());
-  out.push_back(make_algorithm<BezierDeCasteljauSpec>());
-}
+}  // namespace
 
 }  // namespace sw

@@ -3,7 +3,7 @@
 // implicit walk) docs/curves/implicit.md.
 #include <algorithm>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "curves/circle_interior.hpp"
 #include "curves/circle_midpoint.hpp"
 #include "curves/implicit_curve.hpp"
@@ -26,7 +26,7 @@ struct CubicInput {
   std::int64_t xs = 0, xe = 0;
 };
 
-CubicInput parse_cubic(const Json& j, Numeric n) {
+CubicInput parse_cubic(const Json& j) {
   only_keys(j, {"coeffs", "xs", "xe"}, "input");
   CubicInput in;
   const Json& c = j["coeffs"];
@@ -35,7 +35,6 @@ CubicInput parse_cubic(const Json& j, Numeric n) {
     const std::string what = "input.coeffs[" + std::to_string(k) + "]";
     in.c[k] = parse_rational(c[k], what);
     check_digits(in.c[k], what);
-    if (n == Numeric::integer && in.c[k].get_den() != 1) throw InputError(what + ": " + in.c[k].get_str() + " is not an integer (int mode takes integer coefficients)");
   }
   in.xs = parse_integer(j["xs"], "input.xs", -kMaxX, kMaxX);
   in.xe = parse_integer(j["xe"], "input.xe", -kMaxX, kMaxX);
@@ -50,12 +49,11 @@ CubicInput parse_cubic(const Json& j, Numeric n) {
 }
 
 template <class AlgoT> struct CubicSpec {
-  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::write_members, Hook::estimate_steps, Hook::bench_runs};
+  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::write_members, Hook::estimate_steps, Hook::bench_runs, Hook::admit};
   using Algo = AlgoT;
   using Input = CubicInput;
   using Output = PixelsOutput;
   static constexpr bool forward = std::is_same_v<Algo, curves::PolyForwardDiff>;
-  static constexpr std::string_view family = "curves";
   static constexpr std::array views{View::plane2d, View::table, View::plot};
   // One row per column: the difference table (x, y, j, d1, d2), or Horner's x, y, j.
   static constexpr auto table_lines = [] {
@@ -65,7 +63,12 @@ template <class AlgoT> struct CubicSpec {
   static std::vector<Polyline2> outline(const Input& in, const Rect2& w, double cell) { return curves::cubic_outline(in.c, in.xs, in.xe, w, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"coeffs":["1/64",0,"-3/2",2],"xs":-12,"xe":13})";
-  static Input parse(const Json& j, Numeric n) { return parse_cubic(j, n); }
+  static Input parse(const Json& j) { return parse_cubic(j); }
+  static void admit(const Input& in, Numeric n) {
+    for (int k = 0; k < 4 && n == Numeric::integer; ++k)
+      if (in.c[k].get_den() != 1)
+        throw InputError("input.coeffs[" + std::to_string(k) + "]: " + in.c[k].get_str() + " is not an integer (int mode takes integer coefficients)");
+  }
   template <class Num> static curves::Cubic<Num> prepare(const Input& in) {
     curves::Cubic<Num> p;
     for (int k = 0; k < 4; ++k) p.c[k] = num::from_rational<Num>(in.c[k]);
@@ -119,13 +122,12 @@ template <class AlgoT> struct CircleSpec {
   using Input = curves::CircleInput;
   using Output = PixelsOutput;
   static constexpr bool midpoint = std::is_same_v<Algo, curves::CircleMidpoint>;
-  static constexpr std::string_view family = "curves";
   static constexpr std::array views{View::plane2d, View::table, View::plot};
   static constexpr std::array<std::string_view, 1> table_lines{"plot"};  // one row per octant pixel
   static std::vector<Polyline2> outline(const Input& in, const Rect2& w, double cell) { return curves::circle_outline(in.cx, in.cy, in.r, w, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"c":[0,0],"r":9})";
-  static Input parse(const Json& j, Numeric) { return parse_circle(j); }
+  static Input parse(const Json& j) { return parse_circle(j); }
   static std::vector<Handle> handles() { return {{"/c", Handle::Kind::point2, 1, "c"}}; }
   template <class Num> static Input prepare(const Input& in) { return in; }
   template <class Num, class Probe> static Output compute(const Input& in, Probe& probe) {
@@ -236,13 +238,12 @@ struct ImplicitSpec {
   using Algo = curves::ImplicitCurve;
   using Input = ImplicitInput;
   using Output = ImplicitOutput;
-  static constexpr std::string_view family = "curves";
   static constexpr std::array views{View::plane2d, View::table};
   static constexpr std::array<std::string_view, 1> table_lines{"grad"};  // one row per move
   static std::vector<Polyline2> outline(const Input& in, const Rect2& w, double cell) { return curves::implicit_outline(in.c, w, cell); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"P":[["1/4",2,0],[1,0,2],[-36,0,0]],"start":[-12,0],"max_steps":200})";
-  static Input parse(const Json& j, Numeric) { return parse_implicit(j); }
+  static Input parse(const Json& j) { return parse_implicit(j); }
   static std::vector<Handle> handles() { return {{"/start", Handle::Kind::point2, 1, "start"}}; }
   template <class Num> static curves::ImplicitPoly<Num> prepare(const Input& in) {
     curves::ImplicitPoly<Num> p;
@@ -313,17 +314,13 @@ struct ImplicitSpec {
   }
 };
 
+SW_REGISTER(CubicSpec<curves::PolyForwardDiff>);
+SW_REGISTER(CubicSpec<curves::PolyHorner>);
+SW_REGISTER(CircleSpec<curves::CircleInterior>);
+SW_REGISTER(CircleSpec<curves::CircleMidpoint>);
+SW_REGISTER(ImplicitSpec);
+
 }  // namespace
 
-void register_bezier(std::vector<Algorithm>& out);  // bezier.cpp
-
-void register_curves(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<CubicSpec<curves::PolyForwardDiff>>());
-  out.push_back(make_algorithm<CubicSpec<curves::PolyHorner>>());
-  out.push_back(make_algorithm<CircleSpec<curves::CircleInterior>>());
-  out.push_back(make_algorithm<CircleSpec<curves::CircleMidpoint>>());
-  out.push_back(make_algorithm<ImplicitSpec>());
-  register_bezier(out);
-}
 
 }  // namespace sw

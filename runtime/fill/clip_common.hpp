@@ -7,7 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "fill/fill_common.hpp"
 #include "fill_clip_oracle.hpp"
 

@@ -33,13 +33,12 @@ struct SutherlandHodgmanSpec {
   using Algo = fill::SutherlandHodgman;
   using Input = PolygonClipInput;
   using Output = PolygonClipOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d, View::table};
   static constexpr std::array<std::string_view, 1> table_lines{"side"};  // one row per vertex decision
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"polygon":[[0,0],[10,0],[10,8],[5,3],[0,8]],"clip":[[2,-2],[12,2],[9,9],[1,7],[-1,2]]})";
 
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     if (!j.is_object()) throw InputError("input: expected an object");
     Input in;
     if (j.contains("window")) {
@@ -185,8 +184,8 @@ std::vector<BenchSet<PolygonClipInput>> SutherlandHodgmanSpec::bench_sets() {
   return {random, hard};
 }
 
-}  // namespace
+SW_REGISTER(SutherlandHodgmanSpec);
 
-void register_clip_polygon(std::vector<Algorithm>& out) { out.push_back(make_algorithm<SutherlandHodgmanSpec>()); }
+}  // namespace
 
 }  // namespace sw

@@ -26,12 +26,11 @@ struct CohenSutherlandSpec {
   using Algo = fill::CohenSutherland;
   using Input = SegmentClipInput;
   using Output = SegmentClipOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d, View::table};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"segment":[[-3,1.5],[9,6]],"window":{"min":[0,0],"max":[8,5]}})";
 
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys(j, {"segment", "window"}, "input");
     const Json& s = j["segment"];
     if (!s.is_array() || s.size() != 2) throw InputError("input.segment: expected [[x, y], [x, y]]");
@@ -121,8 +120,8 @@ std::vector<BenchSet<SegmentClipInput>> CohenSutherlandSpec::bench_sets() {
   return {random, hard};
 }
 
-}  // namespace
+SW_REGISTER(CohenSutherlandSpec);
 
-void register_clip_segment(std::vector<Algorithm>& out) { out.push_back(make_algorithm<CohenSutherlandSpec>()); }
+}  // namespace
 
 }  // namespace sw

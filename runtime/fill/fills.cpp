@@ -1,7 +1,7 @@
 // The fill family's fills: triangle-dda, triangle-dda-no-offset, triangle-edge, scanline-polygon
 // (registered by specs.cpp). Semantics: docs/fill/semantics.md.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "fill/scanline_polygon.hpp"
 #include "fill/triangle_dda.hpp"
 #include "fill/triangle_edge.hpp"
@@ -18,23 +18,27 @@ struct TriangleInput {
   std::vector<std::vector<Rational>> attrs;  // empty, or 3 lists of n values
 };
 
-TriangleInput parse_triangle(const Json& j, Numeric n, bool with_attrs) {
+TriangleInput parse_triangle(const Json& j, bool with_attrs) {
   if (with_attrs) only_keys_optional(j, {"triangle"}, {"attrs"}, "input");
   else only_keys(j, {"triangle"}, "input");
   const Json& t = j["triangle"];
   if (!t.is_array() || t.size() != 3) throw InputError("input.triangle: expected three vertices [[x,y],[x,y],[x,y]]");
-  const bool fixed = n == Numeric::integer;
   TriangleInput in;
-  for (int k = 0; k < 3; ++k) {
-    const std::string what = "input.triangle[" + std::to_string(k) + "]";
-    in.v[k] = parse_vertex(t[k], what, fixed ? kFixedCoordBound : kCoordBound);
-    for (int a = 0; a < 2; ++a)
-      if (fixed && Rational(in.v[k][a] * kFixedUnit).get_den() != 1)
-        throw InputError(what + "[" + std::to_string(a) + "]: " + in.v[k][a].get_str() + " is not a multiple of 1/256 (int mode is fixed point in 1/256 pixel)");
-  }
+  for (int k = 0; k < 3; ++k) in.v[k] = parse_vertex(t[k], "input.triangle[" + std::to_string(k) + "]", kCoordBound);
   check_budget({in.v.begin(), in.v.end()}, "input.triangle");
   if (with_attrs && j.contains("attrs")) in.attrs = parse_attrs(j["attrs"], 3);
   return in;
+}
+
+// int mode is fixed point in 1/256 pixel: vertices on that grid, within the fixed-point bound.
+void require_fixed_point(const TriangleInput& in) {
+  for (int k = 0; k < 3; ++k)
+    for (int a = 0; a < 2; ++a) {
+      const std::string what = "input.triangle[" + std::to_string(k) + "][" + std::to_string(a) + "]";
+      check_bound(in.v[k][a], kFixedCoordBound, what);
+      if (Rational(in.v[k][a] * kFixedUnit).get_den() != 1)
+        throw InputError(what + ": " + in.v[k][a].get_str() + " is not a multiple of 1/256 (int mode is fixed point in 1/256 pixel)");
+    }
 }
 
 // Random triangles on the 1/256 grid whose boxes are about `side` samples wide, around the origin.
@@ -77,12 +81,11 @@ template <bool Offset> struct TriangleDdaSpec {
   using Algo = std::conditional_t<Offset, fill::TriangleDda, fill::TriangleDdaNoOffset>;
   using Input = TriangleInput;
   using Output = FillOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = Offset ? R"({"triangle":[[1.5,0.75],[12.25,4.5],[5,10.5]],"attrs":[[1,0,0],[0,1,0],[0,0,1]]})"
                                                    : R"({"triangle":[[1.5,0.75],[12.25,4.5],[5,10.5]]})";
-  static Input parse(const Json& j, Numeric n) { return parse_triangle(j, n, true); }
+  static Input parse(const Json& j) { return parse_triangle(j, true); }
   static std::vector<Handle> handles() { return triangle_handles(); }
   template <class Num> static fill::Triangle<Num> prepare(const Input& in) {
     fill::Triangle<Num> t;
@@ -117,15 +120,17 @@ template <bool Offset> struct TriangleDdaSpec {
 };
 
 struct TriangleEdgeSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::handles, Hook::error, Hook::estimate_steps, Hook::admit};
   using Algo = fill::TriangleEdge;
   using Input = TriangleInput;
   using Output = FillOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"triangle":[[1.5,0.75],[12.25,4.5],[5,10.5]]})";
-  static Input parse(const Json& j, Numeric n) { return parse_triangle(j, n, false); }
+  static Input parse(const Json& j) { return parse_triangle(j, false); }
+  static void admit(const Input& in, Numeric n) {
+    if (n == Numeric::integer) require_fixed_point(in);
+  }
   static std::vector<Handle> handles() { return triangle_handles(); }
   template <class Num> static fill::EdgeTriangle<Num> prepare(const Input& in) {
     if constexpr (std::is_same_v<Num, std::int64_t>) {
@@ -159,7 +164,6 @@ struct ScanlinePolygonSpec {
   using Algo = fill::ScanlinePolygon;
   using Input = PolygonInput;
   using Output = FillOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d, View::table};
   static constexpr std::array<std::string_view, 2> table_lines{"bucket", "sort"};  // the edge table, then the active list per row
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
@@ -171,7 +175,7 @@ struct ScanlinePolygonSpec {
     for (std::size_t k = 0; k < r.size(); ++k) ring.push_back(parse_vertex(r[k], what + "[" + std::to_string(k) + "]", kCoordBound));
     return ring;
   }
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys_optional(j, {"polygon", "rule"}, {"rings"}, "input");
     Input in;
     in.rings.push_back(parse_ring(j["polygon"], "input.polygon"));
@@ -247,13 +251,11 @@ struct ScanlinePolygonSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(TriangleDdaSpec<true>);
+SW_REGISTER(TriangleDdaSpec<false>);
+SW_REGISTER(TriangleEdgeSpec);
+SW_REGISTER(ScanlinePolygonSpec);
 
-void register_fills(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<TriangleDdaSpec<true>>());
-  out.push_back(make_algorithm<TriangleDdaSpec<false>>());
-  out.push_back(make_algorithm<TriangleEdgeSpec>());
-  out.push_back(make_algorithm<ScanlinePolygonSpec>());
-}
+}  // namespace
 
 }  // namespace sw

@@ -2,7 +2,7 @@
 // hyperbolic interpolation) and affine-interp (linear on screen), both clipping at w = w_near
 // before any divide (registered by specs.cpp). Semantics: docs/fill/interpolation.md.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "fill/perspective_interp.hpp"
 #include "fill_interp_oracle.hpp"
 #include "fill/fill_common.hpp"
@@ -95,13 +95,12 @@ template <bool Persp> struct InterpSpec {
   using Algo = std::conditional_t<Persp, fill::PerspectiveInterp, fill::AffineInterp>;
   using Input = InterpInput;
   using Output = InterpOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // A floor square's half seen in perspective, its far corner behind the eye: clipped to two triangles.
   static inline const std::string example =
       R"({"triangle":[[-24,-16,0,2],[24,-16,0,2],[0,-4,-1,-0.5]],"attrs":[[0,0],[4,0],[2,3]]})";
-  static Input parse(const Json& j, Numeric) { return parse_interp(j); }
+  static Input parse(const Json& j) { return parse_interp(j); }
   template <class Num> static fill::ClipTriangle<Num> prepare(const Input& in) { return to_clip<Num>(in); }
   template <class Num, class Probe> static Output compute(const fill::ClipTriangle<Num>& t, Probe& probe) {
     fill::FillResult<Num> r;
@@ -125,11 +124,9 @@ template <bool Persp> struct InterpSpec {
   static std::vector<BenchSet<Input>> bench_sets() { return interp_bench_sets(); }
 };
 
-}  // namespace
+SW_REGISTER(InterpSpec<true>);
+SW_REGISTER(InterpSpec<false>);
 
-void register_interp(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<InterpSpec<true>>());
-  out.push_back(make_algorithm<InterpSpec<false>>());
-}
+}  // namespace
 
 }  // namespace sw

@@ -1,7 +1,7 @@
 // raster-clip in the catalog (registered by specs.cpp): the double-DDA triangle fill clipped to a
 // screen at rasterization time. Semantics, bounds and figures: docs/fill/raster-clip.md.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "fill/raster_clip.hpp"
 #include "fill_oracle.hpp"
 #include "fill_raster_oracle.hpp"
@@ -89,12 +89,11 @@ struct RasterClipSpec {
   using Algo = fill::RasterClip;
   using Input = RasterClipInput;
   using Output = ClipFillOutput;
-  static constexpr std::string_view family = "fill";
   static constexpr std::array views{View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example =
       R"({"triangle":[[-6.5,-3.25],[30.75,6.5],[3,40.5]],"viewport":{"min":[0,0],"max":[16,12]},"attrs":[[1,0,0],[0,1,0],[0,0,1]]})";
-  static Input parse(const Json& j, Numeric) { return parse_input(j); }
+  static Input parse(const Json& j) { return parse_input(j); }
   static std::vector<Handle> handles() {
     std::vector<Handle> h;
     for (int k = 0; k < 3; ++k) h.push_back({"/triangle/" + std::to_string(k), Handle::Kind::point2, 8, "p" + std::to_string(k)});
@@ -140,8 +139,8 @@ struct RasterClipSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(RasterClipSpec);
 
-void register_raster_clip(std::vector<Algorithm>& out) { out.push_back(make_algorithm<RasterClipSpec>()); }
+}  // namespace
 
 }  // namespace sw

@@ -3,7 +3,7 @@
 // reference run (each pixel's Phong colour is `shade`, whose GL convention has the independent
 // MPFR oracle). Semantics: docs/lighting/shade.md.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "lighting/gouraud_vs_phong.hpp"
 #include "lighting/shade_common.hpp"
 #include "lighting/shade_input.hpp"
@@ -29,14 +29,13 @@ struct GouraudSpec {
   using Algo = GouraudVsPhong;
   using Input = ShadedTriangle<Rational>;
   using Output = GouraudOutput;
-  static constexpr std::string_view family = "lighting";
   static constexpr std::array views{View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static inline const std::string example =
       R"({"vertices":[{"xy":[0,0],"p":[-1,-1,0],"n":[-1,-1,2]},{"xy":[12,1],"p":[1,-1,0],"n":[1,-1,2]},{"xy":[5,10],"p":[0,1,0],"n":[0,1,2]}],)"
       R"("eye":[0,0,4],"ambient":[0.1,0.1,0.1],"lights":[{"type":"point","position":[0.3,0.2,1.2],"colour":[1,1,1]}],)"
       R"("material":{"ambient":[0.2,0.2,0.2],"diffuse":[0.7,0.3,0.2],"specular":[0.8,0.8,0.8],"shininess":40}})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     if (!j.is_object()) throw InputError("input: expected an object");
     only_keys_optional(j, {"vertices", "lights", "material"}, {"eye", "eye_direction", "ambient", "convention"}, "input");
     Input t;
@@ -104,7 +103,7 @@ struct GouraudSpec {
   static std::vector<BenchSet<Input>> bench_sets() {
     std::mt19937_64 rng(23);
     auto u = [&](double lo, double hi) { return num::to_rational(double(float(std::uniform_real_distribution<double>(lo, hi)(rng)))); };
-    const Input base = parse(Json::parse(example), Numeric::f64);
+    const Input base = parse(Json::parse(example));
     BenchSet<Input> small{"small", {}};
     for (int k = 0; k < 40; ++k) {
       Input t = base;
@@ -116,8 +115,8 @@ struct GouraudSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(GouraudSpec);
 
-void register_lighting_gouraud(std::vector<Algorithm>& out) { out.push_back(make_algorithm<GouraudSpec>()); }
+}  // namespace
 
 }  // namespace sw

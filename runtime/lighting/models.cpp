@@ -11,7 +11,7 @@
 #include <memory>
 #include <random>
 #include <mpfr.h>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "lighting/lighting_input.hpp"
 #include "lighting/models.hpp"
 #include "lighting_oracle.hpp"
@@ -158,13 +158,12 @@ template <class A> struct ModelSpec {
                                     Hook::lobe,       Hook::params,  Hook::compare_group};
   using Input = ModelInput;
   using Output = ModelOutput;
-  static constexpr std::string_view family = "lighting";
   static constexpr std::array views{View::orbit3d, View::image, View::lobe};
   static constexpr std::string_view compare_group = "reflection models";
   static std::vector<Param> params() { return model_params(); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static const std::string example;
-  static Input parse(const Json& j, Numeric) { return lighting_io::parse_model_input(Algo::id, j); }
+  static Input parse(const Json& j) { return lighting_io::parse_model_input(Algo::id, j); }
   static std::vector<Handle> handles() { return {{"/l", Handle::Kind::direction3, 0, "l"}, {"/e", Handle::Kind::direction3, 0, "e"}}; }
   template <class Num> static Prepared<Num> prepare(const Input& in) {
     return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, bounded_by_one(in.choice)};
@@ -363,18 +362,16 @@ std::vector<BenchSet<ModelInput>> model_bench_sets(std::string_view id) {
 
 template <class A> std::vector<BenchSet<ModelInput>> ModelSpec<A>::bench_sets() { return model_bench_sets(A::id); }
 
-}  // namespace
+SW_REGISTER(ModelSpec<Lambert>);
+SW_REGISTER(ModelSpec<Minnaert>);
+SW_REGISTER(ModelSpec<OrenNayar>);
+SW_REGISTER(ModelSpec<Toon>);
+SW_REGISTER(ModelSpec<Phong>);
+SW_REGISTER(ModelSpec<BlinnPhong>);
+SW_REGISTER(ModelSpec<Gaussian>);
+SW_REGISTER(ModelSpec<Beckmann>);
+SW_REGISTER(ModelSpec<CookTorrance>);
 
-void register_lighting_models(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<ModelSpec<Lambert>>());
-  out.push_back(make_algorithm<ModelSpec<Minnaert>>());
-  out.push_back(make_algorithm<ModelSpec<OrenNayar>>());
-  out.push_back(make_algorithm<ModelSpec<Toon>>());
-  out.push_back(make_algorithm<ModelSpec<Phong>>());
-  out.push_back(make_algorithm<ModelSpec<BlinnPhong>>());
-  out.push_back(make_algorithm<ModelSpec<Gaussian>>());
-  out.push_back(make_algorithm<ModelSpec<Beckmann>>());
-  out.push_back(make_algorithm<ModelSpec<CookTorrance>>());
-}
+}  // namespace
 
 }  // namespace sw

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "lighting/shade_input.hpp"
 #include "lighting/shade_common.hpp"
 #include "lighting/shade_oracle_case.hpp"
@@ -36,7 +36,6 @@ struct ShadeSpec {
   using Algo = Shade;
   using Input = ShadeScene<Rational>;
   using Output = ShadeOutput;
-  static constexpr std::string_view family = "lighting";
   static constexpr std::array views{View::orbit3d, View::table};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static inline const std::string example =
@@ -45,7 +44,7 @@ struct ShadeSpec {
       R"({"type":"spot","position":[0,3,3],"spot_direction":[0,-1,-1],"cutoff":45,"exponent":2,"colour":[0.3,0.3,1]},)"
       R"({"type":"directional","direction":[-1,1,1],"colour":[0.2,0.2,0.2],"ambient":[0.05,0.05,0.05]}],)"
       R"("material":{"ambient":[0.2,0.2,0.2],"diffuse":[0.8,0.5,0.3],"specular":[0.5,0.5,0.5],"shininess":20}})";
-  static Input parse(const Json& j, Numeric) { return parse_scene(j, "input"); }
+  static Input parse(const Json& j) { return parse_scene(j, "input"); }
   template <class Num> static ShadeScene<Num> prepare(const Input& in) { return convert_scene<Num>(in); }
   template <class Num, class Probe> static Output compute(const ShadeScene<Num>& s, Probe& probe) {
     return shade_output<Num>(shade<Num>(s, probe));
@@ -69,13 +68,9 @@ std::vector<BenchSet<ShadeScene<Rational>>> ShadeSpec::bench_sets() {
   return {random, hard};
 }
 
+SW_REGISTER(ShadeSpec);
+
 }  // namespace
 
-void register_lighting_gouraud(std::vector<Algorithm>& out);  // gouraud.cpp
-
-void register_lighting_shade(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<ShadeSpec>());
-  register_lighting_gouraud(out);
-}
 
 }  // namespace sw

@@ -1,6 +1,6 @@
 // Parsing and validating the scene of `shade` and `gouraud-vs-phong` (shade_input.hpp).
 #include "lighting/shade_input.hpp"
-#include "rays/specs.hpp"
+#include "rays/ray_input.hpp"
 
 namespace sw::lighting {
 namespace {

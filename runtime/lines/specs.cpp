@@ -1,6 +1,6 @@
 // The line family's catalog entries: dda-line, dda-grid-walk, bresenham-line.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "pixels.hpp"
 #include "lines_oracle.hpp"
 #include "lines/bresenham_line.hpp"
@@ -17,17 +17,21 @@ struct SegmentInput {
   Vec2<Rational> p0, p1;
 };
 
-SegmentInput parse_segment(const Json& j, Numeric n, bool integer_endpoints) {
+// Throws unless both endpoints are integers; `why` says who needs them.
+void require_integer_endpoints(const SegmentInput& in, const char* why) {
+  for (const auto* p : {&in.p0, &in.p1})
+    for (int a = 0; a < 2; ++a)
+      if ((*p)[a].get_den() != 1)
+        throw InputError(std::string("input.") + (p == &in.p0 ? "p0" : "p1") + "[" + std::to_string(a) + "]: " + (*p)[a].get_str() +
+                         " is not an integer (" + why + ")");
+}
+
+SegmentInput parse_segment(const Json& j, bool integer_endpoints) {
   only_keys(j, {"p0", "p1"}, "input");
   SegmentInput in{parse_point2(j, "p0"), parse_point2(j, "p1")};
   for (const auto* p : {&in.p0, &in.p1})
-    for (int a = 0; a < 2; ++a) {
-      const std::string what = std::string("input.") + (p == &in.p0 ? "p0" : "p1") + "[" + std::to_string(a) + "]";
-      check_bound((*p)[a], kCoordBound, what);
-      if ((integer_endpoints || n == Numeric::integer) && (*p)[a].get_den() != 1)
-        throw InputError(what + ": " + (*p)[a].get_str() + " is not an integer (" +
-                         (integer_endpoints ? "this algorithm takes integer endpoints)" : "int mode takes integer endpoints)"));
-    }
+    for (int a = 0; a < 2; ++a) check_bound((*p)[a], kCoordBound, std::string("input.") + (p == &in.p0 ? "p0" : "p1") + "[" + std::to_string(a) + "]");
+  if (integer_endpoints) require_integer_endpoints(in, "this algorithm takes integer endpoints");
   return in;
 }
 
@@ -56,13 +60,15 @@ std::vector<BenchSet<SegmentInput>> segment_bench_sets(bool integer_endpoints) {
 }
 
 template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
-  static constexpr std::array hooks{Hook::estimate_steps, Hook::handles, Hook::write_members};  // write_members: each Spec below
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::handles, Hook::write_members, Hook::admit};  // write_members: each Spec below
   using Algo = AlgoT;
   using Input = SegmentInput;
   using Output = PixelsOutput;
-  static constexpr std::string_view family = "lines";
   static constexpr std::array views{View::plane2d};
-  static Input parse(const Json& j, Numeric n) { return parse_segment(j, n, IntegerEndpoints); }
+  static Input parse(const Json& j) { return parse_segment(j, IntegerEndpoints); }
+  static void admit(const Input& in, Numeric n) {
+    if (n == Numeric::integer) require_integer_endpoints(in, "int mode takes integer endpoints");
+  }
   template <class Num> static std::array<Vec2<Num>, 2> prepare(const Input& in) { return {to_num<Num>(in.p0), to_num<Num>(in.p1)}; }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
   // Each algorithm takes at most three steps per pixel it passes, plus its set-up.
@@ -116,12 +122,10 @@ struct BresenhamSpec : SegmentSpec<lines::BresenhamLine, true> {
   static Output oracle(const Input& in) { return {oracle::column_pixels(in.p0, in.p1, oracle::Sampling::directed)}; }
 };
 
-}  // namespace
+SW_REGISTER(DdaLineSpec);
+SW_REGISTER(GridWalkSpec);
+SW_REGISTER(BresenhamSpec);
 
-void register_lines(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<DdaLineSpec>());
-  out.push_back(make_algorithm<GridWalkSpec>());
-  out.push_back(make_algorithm<BresenhamSpec>());
-}
+}  // namespace
 
 }  // namespace sw

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "rays/cases.hpp"
 #include "rays/ray_box.hpp"
 #include "rays/ray_plane.hpp"
@@ -13,7 +13,7 @@
 #include "rays/ray_triangle_barycentric.hpp"
 #include "rays/ray_triangle_mt.hpp"
 #include "rays/ray_triangle_watertight.hpp"
-#include "rays/specs.hpp"
+#include "rays/ray_input.hpp"
 #include "rays_oracle.hpp"
 
 namespace sw {
@@ -258,10 +258,9 @@ template <class AlgoT, Prim P> struct RaySpec {
   using Output = RayOutput;
   // The magnitude filter, then intervals for what it leaves uncertain (docs/rays/accuracy.md).
   using Filters = std::tuple<Mag, Interval>;
-  static constexpr std::string_view family = "rays";
   static constexpr std::array views{View::orbit3d, View::image};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
-  static Input parse(const Json& j, Numeric) { return parse_input(j, P); }
+  static Input parse(const Json& j) { return parse_input(j, P); }
   static std::vector<Handle> handles() { return {{"/ray/o", Handle::Kind::point3, 8, "o"}, {"/ray/d", Handle::Kind::direction3, 0, "o + d"}}; }
   template <class Num> static Prepared<Num> prepare(const Input& in) {
     Prepared<Num> p;
@@ -367,17 +366,15 @@ struct PlaneSpec : RaySpec<ray::RayPlane, Prim::plane> {
 };
 
 
-}  // namespace
+SW_REGISTER(PlaneSpec);
+SW_REGISTER(SphereSpec<ray::RaySphereGeometric>);
+SW_REGISTER(SphereSpec<ray::RaySphereQuadratic>);
+SW_REGISTER(SphereSpec<ray::RaySphereStable>);
+SW_REGISTER(BoxSpec);
+SW_REGISTER(TriangleSpec<ray::RayTriangleBarycentric>);
+SW_REGISTER(TriangleSpec<ray::RayTriangleMT>);
+SW_REGISTER(TriangleSpec<ray::RayTriangleWatertight>);
 
-void register_ray_intersections(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<PlaneSpec>());
-  out.push_back(make_algorithm<SphereSpec<ray::RaySphereGeometric>>());
-  out.push_back(make_algorithm<SphereSpec<ray::RaySphereQuadratic>>());
-  out.push_back(make_algorithm<SphereSpec<ray::RaySphereStable>>());
-  out.push_back(make_algorithm<BoxSpec>());
-  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleBarycentric>>());
-  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleMT>>());
-  out.push_back(make_algorithm<TriangleSpec<ray::RayTriangleWatertight>>());
-}
+}  // namespace
 
 }  // namespace sw

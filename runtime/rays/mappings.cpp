@@ -6,9 +6,9 @@
 #include <cmath>
 #include <memory>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "rays/camera_ray.hpp"
-#include "rays/specs.hpp"
+#include "rays/ray_input.hpp"
 #include "rays/sphere_uv.hpp"
 
 namespace sw {
@@ -113,12 +113,11 @@ struct CameraSpec {
   using Algo = ray::CameraRayAlgo;
   using Input = CameraInput;
   using Output = ValuesOutput;
-  static constexpr std::string_view family = "rays";
   static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static inline const std::string example =
       R"({"camera":{"eye":[0,1,5],"vpn":[0,0,1],"vup":[0,1,0],"d":1,"fov":60},"pixel":[3,2],"size":[8,6],"projection":"perspective"})";
-  static Input parse(const Json& j, Numeric) { return parse_camera(j); }
+  static Input parse(const Json& j) { return parse_camera(j); }
   template <class Num> struct Prepared {
     ray::Camera<Num> cam;
     std::int64_t i, j;
@@ -159,11 +158,10 @@ struct SphereUVSpec {
   using Algo = ray::SphereUVAlgo;
   using Input = SphereUVInput;
   using Output = ValuesOutput;
-  static constexpr std::string_view family = "rays";
   static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static inline const std::string example = R"({"sphere":{"c":[0,0,0],"r":1},"point":[-0.6,0,0.8]})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys(j, {"sphere", "point"}, "input");
     only_keys(j["sphere"], {"c", "r"}, "input.sphere");
     Input in{point3(j["sphere"]["c"], "input.sphere.c"), point3(j["point"], "input.point"), parse_rational(j["sphere"]["r"], "input.sphere.r")};
@@ -226,11 +224,9 @@ std::vector<BenchSet<CameraInput>> CameraSpec::bench_sets() {
     for (int k = 0; k < 1500; ++k) random.inputs.push_back(camera(p, false)), hard.inputs.push_back(camera(p, true));
   return {random, hard};
 }
-}  // namespace
+SW_REGISTER(CameraSpec);
+SW_REGISTER(SphereUVSpec);
 
-void register_ray_mappings(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<CameraSpec>());
-  out.push_back(make_algorithm<SphereUVSpec>());
-}
+}  // namespace
 
 }  // namespace sw

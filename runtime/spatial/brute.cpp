@@ -2,7 +2,7 @@
 // baseline of bvh-traverse and kd-traverse (same output, same ties, same oracle).
 #include <memory>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "spatial/bvh_cases.hpp"
 #include "spatial/ray_triangles.hpp"
 #include "spatial/spatial_common.hpp"
@@ -34,14 +34,13 @@ struct RayTrianglesSpec {
   using Algo = spatial::RayTriangles;
   using Input = BruteInput;
   using Output = spatial::HitOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // Two triangles sharing a diagonal, the ray aimed at it (lesson 05).
   static inline const std::string example =
       R"({"triangles":[[[-5,-5,0],[5,-5,0],[5,5,0]],[[-5,-5,0],[5,5,0],[-5,5,0]]],"test":"mt",)"
       R"("ray":{"o":[-1.9140625,1.91796875,11.66015625],"d":[5.49609375,1.6640625,-11.66015625]}})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys_optional(j, {"ray"}, {"triangles", "mesh", "test"}, "input");
     BruteInput in;
     in.mesh = std::make_shared<const Mesh>(spatial::parse_mesh(j, "input"));
@@ -94,8 +93,8 @@ struct RayTrianglesSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(RayTrianglesSpec);
 
-void register_spatial_brute(std::vector<Algorithm>& out) { out.push_back(make_algorithm<RayTrianglesSpec>()); }
+}  // namespace
 
 }  // namespace sw

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "spatial/bsp_painter.hpp"
 #include "spatial/spatial_common.hpp"
 
@@ -184,12 +184,11 @@ template <bool Painter> struct BspSpec {
   using Algo = std::conditional_t<Painter, BspPainter, BspBuild>;
   using Input = BspInput;
   using Output = BspOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views = Painter ? std::array{View::plane2d, View::tree} : std::array{View::tree, View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = std::string(R"({"segments":[[[0,0],[8,8]],[[8,0],[0,8]],[[-2,3],[10,3]],[[2,10],[6,10]],[[10,10],[12,12]],[[1,-3],[7,-3]]])") +
                                             (Painter ? R"(,"eye":[3,-6]})" : "}");
-  static Input parse(const Json& j, Numeric) { return parse_bsp(j, Painter); }
+  static Input parse(const Json& j) { return parse_bsp(j, Painter); }
   static std::vector<Handle> handles() {
     std::vector<Handle> h;
     if (Painter) h.push_back({"/eye", Handle::Kind::point2, 8, "eye"});
@@ -252,11 +251,9 @@ template <bool Painter> struct BspSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(BspSpec<false>);
+SW_REGISTER(BspSpec<true>);
 
-void register_spatial_bsp(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<BspSpec<false>>());
-  out.push_back(make_algorithm<BspSpec<true>>());
-}
+}  // namespace
 
 }  // namespace sw

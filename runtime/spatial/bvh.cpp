@@ -4,7 +4,7 @@
 #include <memory>
 #include <optional>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "rays_oracle.hpp"
 #include "spatial/bvh_cases.hpp"
 #include "spatial/bvh_traverse.hpp"
@@ -119,7 +119,6 @@ struct BvhBuildSpec {
   using Algo = spatial::BvhBuild;
   using Input = BvhInput;
   using Output = spatial::TreeOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::tree, View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // Two rows of a height field, a thin sliver, and three identical triangles (no centroid spread).
@@ -127,7 +126,7 @@ struct BvhBuildSpec {
       R"({"triangles":[[[0,0,0],[1,0,0],[0,1,0]],[[1,0,0],[1,1,1],[0,1,0]],[[1,0,0],[2,0,1],[1,1,1]],[[2,0,1],[2,1,0],[1,1,1]],)"
       R"([[0,1,0],[1,1,1],[0,2,1]],[[1,1,1],[1,2,0],[0,2,1]],[[4,0,0],[4,2,0],[4,1,0.5]],)"
       R"([[6,6,6],[7,6,6],[6,7,6]],[[6,6,6],[7,6,6],[6,7,6]],[[6,6,6],[7,6,6],[6,7,6]]]})";
-  static Input parse(const Json& j, Numeric) { return parse_common(j, false); }
+  static Input parse(const Json& j) { return parse_common(j, false); }
   template <class Num> static Prepared<Num> prepare(const Input& in) { return prepare_mesh<Num>(in); }
   template <class Num, class Probe> static Output compute(const Prepared<Num>& p, Probe& probe) {
     return tree_output(spatial::bvh_build<Num>(p.tris, probe));
@@ -175,7 +174,6 @@ struct BvhTraverseSpec {
   using Algo = spatial::BvhTraverse;
   using Input = BvhInput;
   using Output = TraverseOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::orbit3d, View::tree};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // A ray through the shared vertex (1, 1, 1) of four triangles: the lowest id wins the tie.
@@ -183,7 +181,7 @@ struct BvhTraverseSpec {
       R"({"triangles":[[[0,0,0],[1,0,0],[0,1,0]],[[1,0,0],[1,1,1],[0,1,0]],[[1,0,0],[2,0,1],[1,1,1]],[[2,0,1],[2,1,0],[1,1,1]],)"
       R"([[0,1,0],[1,1,1],[0,2,1]],[[1,1,1],[1,2,0],[0,2,1]],[[4,0,0],[4,2,0],[4,1,0.5]],[[0,0,-2],[3,0,-2],[0,3,-2]]],)"
       R"("ray":{"o":[1,1,4],"d":[0,-0.0,-1]}})";
-  static Input parse(const Json& j, Numeric) { return parse_common(j, true); }
+  static Input parse(const Json& j) { return parse_common(j, true); }
   static std::vector<Handle> handles() { return {{"/ray/o", Handle::Kind::point3, 8, "o"}, {"/ray/d", Handle::Kind::direction3, 0, "o + d"}}; }
   template <class Num> static Prepared<Num> prepare(const Input& in) { return prepare_mesh<Num>(in); }
   template <class Num, class Probe> static Output compute(const Prepared<Num>& p, Probe& probe) {
@@ -231,11 +229,9 @@ struct BvhTraverseSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(BvhBuildSpec);
+SW_REGISTER(BvhTraverseSpec);
 
-void register_spatial_bvh(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<BvhBuildSpec>());
-  out.push_back(make_algorithm<BvhTraverseSpec>());
-}
+}  // namespace
 
 }  // namespace sw

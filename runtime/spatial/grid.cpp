@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <random>
 #include <set>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "spatial/grid_traverse_3d.hpp"
 #include "spatial/spatial_common.hpp"
 #include "spatial_grid_oracle.hpp"
@@ -60,12 +60,11 @@ struct GridTraverse3dSpec {
   using Algo = spatial::GridTraverse3d;
   using Input = GridInput;
   using Output = GridOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::orbit3d, View::table};
   static constexpr std::array<std::string_view, 2> table_lines{"start", "pick"};  // a row per move
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example = R"({"p0":[0.25,-0.5,0.75],"p1":[4.5,2.5,-1.5]})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys(j, {"p0", "p1"}, "input");
     Input in{parse_grid_point(j, "p0"), parse_grid_point(j, "p1")};
     const std::int64_t moves = grid_moves(in);
@@ -120,8 +119,8 @@ struct GridTraverse3dSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(GridTraverse3dSpec);
 
-void register_spatial_grid(std::vector<Algorithm>& out) { out.push_back(make_algorithm<GridTraverse3dSpec>()); }
+}  // namespace
 
 }  // namespace sw

@@ -2,7 +2,7 @@
 // Semantics: docs/spatial/kd.md.
 #include <cmath>
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "spatial/kd_common.hpp"
 
 namespace sw {
@@ -74,12 +74,11 @@ struct KdBuildSpec {
   using Algo = spatial::KdBuild;
   using Input = BuildInput;
   using Output = TreeOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::tree, View::plane2d, View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example =
       R"({"points":[[1,1],[2,5],[3,2],[4,4],[5,1],[6,6],[7,3],[8,5],[8,1],[2,2],[6,3],[6,4],[1,6],[7,7]]})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     Input in;
     if (j.is_object() && j.contains("points")) {
       only_keys(j, {"points"}, "input");
@@ -141,6 +140,8 @@ struct KdBuildSpec {
   }
 };
 
+SW_REGISTER(KdBuildSpec);
+
 }  // namespace
 
 namespace kdspec {
@@ -154,10 +155,5 @@ std::vector<std::array<double, 3>> random_points_for(std::uint64_t seed, std::si
   return random_points3(rng, n);
 }
 }  // namespace kdspec
-
-void register_spatial_kd(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<KdBuildSpec>());
-  register_spatial_kd_queries(out);
-}
 
 }  // namespace sw

@@ -66,5 +66,4 @@ template <class Num, int D> TreeOutput tree_output(const KdTree<Num, D>& tree) {
 }  // namespace sw::kdspec
 
 namespace sw {
-void register_spatial_kd_queries(std::vector<Algorithm>& out);  // kd_query.cpp
 }

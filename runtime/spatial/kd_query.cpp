@@ -2,7 +2,7 @@
 // (k nearest points). Each builds its tree with kd-build first, as a nested listing.
 // Semantics: docs/spatial/kd.md.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "spatial/kd_common.hpp"
 #include "spatial/kd_nearest.hpp"
 #include "spatial/kd_traverse.hpp"
@@ -32,7 +32,6 @@ struct KdTraverseSpec {
   using Algo = spatial::KdTraverse;
   using Input = TraverseInput;
   using Output = HitOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::tree, View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // A 3 x 3 grid of unit squares, two triangles each, on z = 0, and a ray that crosses split planes.
@@ -40,7 +39,7 @@ struct KdTraverseSpec {
       R"({"triangles":[[[0,0,0],[1,0,0],[1,1,0]],[[0,0,0],[1,1,0],[0,1,0]],[[1,0,0],[2,0,0],[2,1,0]],[[1,0,0],[2,1,0],[1,1,0]],[[2,0,0],[3,0,0],[3,1,0]],[[2,0,0],[3,1,0],[2,1,0]],)"
       R"([[0,1,0],[1,1,0],[1,2,0]],[[0,1,0],[1,2,0],[0,2,0]],[[1,1,0],[2,1,0],[2,2,0]],[[1,1,0],[2,2,0],[1,2,0]],[[2,1,0],[3,1,0],[3,2,0]],[[2,1,0],[3,2,0],[2,2,0]],)"
       R"([[0,2,0],[1,2,0],[1,3,0]],[[0,2,0],[1,3,0],[0,3,0]],[[1,2,0],[2,2,0],[2,3,0]],[[1,2,0],[2,3,0],[1,3,0]],[[2,2,0],[3,2,0],[3,3,0]],[[2,2,0],[3,3,0],[2,3,0]]],"ray":{"o":[4,3.5,2],"d":[-2,-1.5,-2]}})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     if (!j.is_object() || (j.contains("triangles") ? 1 : 0) + (j.contains("mesh") ? 1 : 0) != 1)
       throw InputError("input: expected exactly one of \"triangles\" and \"mesh\", and \"ray\"");
     only_keys(j, {j.contains("mesh") ? "mesh" : "triangles", "ray"}, "input");
@@ -121,12 +120,11 @@ struct KdNearestSpec {
   using Algo = spatial::KdNearest;
   using Input = NearestInput;
   using Output = NearestOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::tree, View::plane2d, View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example =
       R"({"points":[[1,1],[2,5],[3,2],[4,4],[5,1],[6,6],[7,3],[8,5],[8,1],[2,2],[6,3],[6,4],[1,6],[7,7]],"query":[5,3.5],"k":3})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys(j, {"points", "query", "k"}, "input");
     Input in;
     in.pts = parse_point_set(j["points"], "input.points");
@@ -212,11 +210,9 @@ struct KdNearestSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(KdTraverseSpec);
+SW_REGISTER(KdNearestSpec);
 
-void register_spatial_kd_queries(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<KdTraverseSpec>());
-  out.push_back(make_algorithm<KdNearestSpec>());
-}
+}  // namespace
 
 }  // namespace sw

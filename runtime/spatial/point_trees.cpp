@@ -1,7 +1,7 @@
 // The point trees in the catalog: quadtree-build (2D points) and octree-build (3D points or
 // triangles), registered by specs.cpp. Semantics, bounds and budgets: docs/spatial/point-trees.md.
 #include <random>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "spatial/octree_build.hpp"
 #include "spatial/quadtree_build.hpp"
 #include "spatial/spatial_common.hpp"
@@ -121,12 +121,11 @@ struct QuadtreeBuildSpec {
   using Algo = spatial::QuadtreeBuild;
   using Input = QuadInput;
   using Output = CellTreeOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::tree, View::plane2d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example =
       R"({"points":[[1,1],[3,2],[2,6],[6,6],[7,1],[5,3],[4,4],[6.5,5.5],[1.5,7],[2,2]],"capacity":2,"max_depth":4})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     only_keys_optional(j, {"points"}, {"capacity", "max_depth"}, "input");
     Input in{spatial::parse_points<2>(j["points"], "input.points"), parse_params(j, 24, 12)};
     // Each point is placed once per level: bound the work before running.
@@ -185,12 +184,11 @@ struct OctreeBuildSpec {
   using Algo = spatial::OctreeBuild;
   using Input = OctInput;
   using Output = CellTreeOutput;
-  static constexpr std::string_view family = "spatial";
   static constexpr std::array views{View::tree, View::orbit3d};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   static inline const std::string example =
       R"({"triangles":[[[0,0,0],[4,0,0],[0,4,0]],[[4,4,4],[0,4,4],[4,0,4]],[[0,0,4],[1,1,3],[0,2,4]],[[3,3,0],[4,3,1],[3,4,1]],[[2,2,2],[2,2,2],[2,2,2]]],"capacity":1,"max_depth":3})";
-  static Input parse(const Json& j, Numeric) {
+  static Input parse(const Json& j) {
     Input in;
     if (j.is_object() && j.contains("points")) {
       only_keys_optional(j, {"points"}, {"capacity", "max_depth", "max_refs"}, "input");
@@ -260,11 +258,9 @@ struct OctreeBuildSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(QuadtreeBuildSpec);
+SW_REGISTER(OctreeBuildSpec);
 
-void register_spatial_point_trees(std::vector<Algorithm>& out) {
-  out.push_back(make_algorithm<QuadtreeBuildSpec>());
-  out.push_back(make_algorithm<OctreeBuildSpec>());
-}
+}  // namespace
 
 }  // namespace sw

@@ -1,4 +1,5 @@
 #include "spatial/spatial_common.hpp"
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -153,7 +154,11 @@ Mesh read_obj(LineReader& r) {
   return m;
 }
 
+std::atomic<std::uint64_t> g_mesh_files_opened{0};
+
 }  // namespace
+
+std::uint64_t mesh_files_opened() { return g_mesh_files_opened.load(); }
 
 Mesh read_mesh_file(const std::string& path) {
   const std::string shown = path.substr(0, 200);
@@ -163,6 +168,7 @@ Mesh read_mesh_file(const std::string& path) {
   const std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
   if (ext != "off" && ext != "obj") throw InputError(shown + ": expected a .off or .obj mesh file");
   r.in.open(path, std::ios::binary | std::ios::ate);
+  ++g_mesh_files_opened;
   if (!r.in) throw InputError(shown + ": cannot read the mesh file");
   const auto size = static_cast<std::size_t>(r.in.tellg());
   if (size > kMaxMeshBytes) throw InputError(shown + ": " + std::to_string(size) + " bytes, more than the bound " + std::to_string(kMaxMeshBytes));

@@ -53,6 +53,8 @@ Mesh parse_mesh(const Json& input, const std::string& what);
 // Reads an OFF or OBJ file (by its extension). Polygons are split into fans. Errors name the
 // file and line.
 Mesh read_mesh_file(const std::string& path);
+// How many mesh files have been opened in this process (the parse-once tests read it).
+std::uint64_t mesh_files_opened();
 
 template <int D> std::vector<std::array<double, D>> parse_points(const Json& arr, const std::string& what);
 

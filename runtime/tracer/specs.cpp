@@ -3,7 +3,7 @@
 // nested listings. Double only: the tracer's colours go through sqrt, pow and noise, and exact
 // rationals would grow without bound over the recursion. Semantics: docs/tracer/renderer.md.
 #include <memory>
-#include "adapter.hpp"
+#include "register.hpp"
 #include "tracer/history.hpp"
 
 namespace sw {
@@ -45,13 +45,12 @@ struct WhittedSpec {
   using Algo = tracer::Whitted;
   using Input = HistoryInput;
   using Output = WhittedOutput;
-  static constexpr std::string_view family = "tracer";
   static constexpr std::array views{View::scene, View::orbit3d};
   static constexpr std::array numerics{Numeric::f64};
   // A pixel of the glass-spheres scene at 80x60 that sees the chrome sphere: a mirror ray, then
   // the floor and its shadow rays.
   static inline const std::string example = R"({"scene":"scenes/glass-spheres.json","size":[80,60],"pixel":[44,18]})";
-  static Input parse(const Json& j, Numeric) { return tracer::parse_history_input(j); }
+  static Input parse(const Json& j) { return tracer::parse_history_input(j); }
   // Every number type runs in double (only f64 is declared; the bench's exact column is double too).
   template <class Num> static WhittedPrepared prepare(const Input& in) { return {tracer::history_scene(in), in.i, in.j}; }
   template <class Num, class Probe> static Output compute(const WhittedPrepared& p, Probe& probe) {
@@ -80,8 +79,8 @@ struct WhittedSpec {
   }
 };
 
-}  // namespace
+SW_REGISTER(WhittedSpec);
 
-void register_tracer(std::vector<Algorithm>& out) { out.push_back(make_algorithm<WhittedSpec>()); }
+}  // namespace
 
 }  // namespace sw

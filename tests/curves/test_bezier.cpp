@@ -146,7 +146,7 @@ TEST_CASE("curves bezier: check follows the nested listing and names a step from
   const Algorithm& alg = find_algorithm("bezier-forward-diff");
   const Json in = Json::parse(alg.example);
   std::stringstream good;
-  write_trace(alg, Numeric::exact, in, good);
+  write_trace(alg.open(in, Numeric::exact), good);
   CHECK(check_trace(good, false).status == 0);
   // Move the first nested step out of dda-line's listing: the replay names the listing.
   std::string text = good.str();

@@ -169,15 +169,15 @@ TEST_CASE("fill clip: sutherland-hodgman corpus in every mode against the oracle
   std::size_t float_wrong = 0, double_wrong = 0;
   for (const Case& c : corpus_cases("sutherland-hodgman")) {
     INFO(c.name);
-    const Json want = alg.canonical(alg.oracle(c.input));
-    const Json exact = alg.run(c.input, Numeric::exact);
+    const Json want = alg.canonical(alg.open(c.input).oracle());
+    const Json exact = alg.open(c.input, Numeric::exact).run();
     CHECK(alg.canonical(exact) == want);
-    const Json filtered = alg.run(c.input, Numeric::filtered);
+    const Json filtered = alg.open(c.input, Numeric::filtered).run();
     CHECK(filtered["polygon"].size() == exact["polygon"].size());
     if (filtered["fallback"].get<bool>()) CHECK(alg.canonical(filtered) == want);
     // Rounded modes: a decision differs when the vertex count does.
-    float_wrong += alg.run(c.input, Numeric::f32)["polygon"].size() != exact["polygon"].size();
-    double_wrong += alg.run(c.input, Numeric::f64)["polygon"].size() != exact["polygon"].size();
+    float_wrong += alg.open(c.input, Numeric::f32).run()["polygon"].size() != exact["polygon"].size();
+    double_wrong += alg.open(c.input, Numeric::f64).run()["polygon"].size() != exact["polygon"].size();
   }
   CHECK(float_wrong == 1);  // "vertex 2^-40 outside" (next test)
   CHECK(double_wrong == 0);
@@ -187,9 +187,9 @@ TEST_CASE("fill clip: float keeps a vertex 2^-40 outside the window and loses tw
   // 3 - 2^-40 rounds to 3 in float: the vertex lands on y = ymin, inside the closed half-plane.
   const Algorithm& alg = find_algorithm("sutherland-hodgman");
   const Json in = Json::parse(R"({"polygon":[[2,"3298534883327/1099511627776"],[6,4],[1,4]],"window":{"min":[0,3],"max":[8,5]}})");
-  CHECK(alg.run(in, Numeric::exact)["polygon"].size() == 4);
-  CHECK(alg.run(in, Numeric::f64)["polygon"].size() == 4);
-  CHECK(alg.run(in, Numeric::f32)["polygon"] == Json::parse("[[2.0,3.0],[6.0,4.0],[1.0,4.0]]"));
+  CHECK(alg.open(in, Numeric::exact).run()["polygon"].size() == 4);
+  CHECK(alg.open(in, Numeric::f64).run()["polygon"].size() == 4);
+  CHECK(alg.open(in, Numeric::f32).run()["polygon"] == Json::parse("[[2.0,3.0],[6.0,4.0],[1.0,4.0]]"));
 }
 
 TEST_CASE("fill clip: every value a sutherland-hodgman step records matches its closed form", "[fill][clip]") {

@@ -106,13 +106,13 @@ TEST_CASE("fill clip: cohen-sutherland corpus in every mode against the oracle",
   std::size_t rounded_decisions_wrong = 0;
   for (const Case& c : corpus_cases("cohen-sutherland")) {
     INFO(c.name);
-    const Json want = alg.canonical(alg.oracle(c.input));
-    CHECK(alg.canonical(alg.run(c.input, Numeric::exact)) == want);
-    const Json filtered = alg.run(c.input, Numeric::filtered);
+    const Json want = alg.canonical(alg.open(c.input).oracle());
+    CHECK(alg.canonical(alg.open(c.input, Numeric::exact).run()) == want);
+    const Json filtered = alg.open(c.input, Numeric::filtered).run();
     CHECK(filtered["segment"].is_null() == want["segment"].is_null());
     if (filtered["fallback"].get<bool>()) CHECK(alg.canonical(filtered) == want);
     for (Numeric n : {Numeric::f32, Numeric::f64}) {
-      const Json got = alg.run(c.input, n);
+      const Json got = alg.open(c.input, n).run();
       CHECK(!got.contains("bound_hit"));
       rounded_decisions_wrong += got["segment"].is_null() != want["segment"].is_null();
     }
@@ -124,9 +124,9 @@ TEST_CASE("fill clip: float accepts a segment that misses a corner by 2^-40", "[
   // 3 + 2^-40 and 7 + 2^-40 round to 3 and 7 in float: the line then touches the corner (0, 5).
   const Algorithm& alg = find_algorithm("cohen-sutherland");
   const Json in = Json::parse(R"({"segment":[[-2,"3298534883329/1099511627776"],[2,"7696581394433/1099511627776"]],"window":{"min":[0,0],"max":[8,5]}})");
-  CHECK(alg.run(in, Numeric::exact)["segment"].is_null());
-  CHECK(alg.run(in, Numeric::f64)["segment"].is_null());
-  CHECK(alg.run(in, Numeric::f32)["segment"] == Json::parse("[[0.0,5.0],[0.0,5.0]]"));
+  CHECK(alg.open(in, Numeric::exact).run()["segment"].is_null());
+  CHECK(alg.open(in, Numeric::f64).run()["segment"].is_null());
+  CHECK(alg.open(in, Numeric::f32).run()["segment"] == Json::parse("[[0.0,5.0],[0.0,5.0]]"));
   // Near a corner at large scale, float's decisions go wrong in a measurable share of cases.
   SmallRng g{std::mt19937_64(43)};
   std::size_t wrong = 0, bound_hits = 0, cases = 2000;

@@ -136,9 +136,9 @@ TEST_CASE("interp: every corpus case in exact and filtered equals the oracle, an
   for (const Json& c : interp_corpus()) {
     const Algorithm& alg = find_algorithm(c["algorithm"].get<std::string>());
     INFO(c["name"].get<std::string>() << " " << alg.id);
-    const Json want = alg.oracle(c["input"]);
-    CHECK(alg.run(c["input"], Numeric::exact) == want);
-    Json filtered = alg.run(c["input"], Numeric::filtered);
+    const Json want = alg.open(c["input"]).oracle();
+    CHECK(alg.open(c["input"], Numeric::exact).run() == want);
+    Json filtered = alg.open(c["input"], Numeric::filtered).run();
     filtered.erase("fallback");
     CHECK(filtered["pixels"] == want["pixels"]);
     oracle_of[c["name"].get<std::string>() + "/" + std::string(alg.id)] = want;
@@ -162,7 +162,7 @@ TEST_CASE("interp: double misses only samples exactly on an edge, and its values
   // edge (a left edge: covered), and double, which cannot hold 40/3, puts it just outside.
   const Algorithm& alg = find_algorithm("perspective-interp");
   const Json in = Json::parse(R"({"triangle":[[-40,-30,0,3],[40,-30,0,3],[0,-30,0,12]],"attrs":[[0,0],[8,0],[4,8]]})");
-  const Json want = alg.oracle(in), got = alg.run(in, Numeric::f64);
+  const Json want = alg.open(in).oracle(), got = alg.open(in, Numeric::f64).run();
   std::map<std::pair<std::int64_t, std::int64_t>, Json> exact_at;
   for (std::size_t p = 0; p < want["pixels"].size(); ++p) exact_at[{want["pixels"][p][0], want["pixels"][p][1]}] = want["values"][p];
   CHECK(exact_at.count({-8, -7}));
@@ -198,5 +198,5 @@ TEST_CASE("interp: bad input is one line and exit 2 with no output file", "[fill
     SW_CHECK_BAD_TRACE(b.alg, b.numeric, b.input, b.expect);
   }
   // w <= 0 everywhere is valid input: it covers nothing.
-  CHECK(find_algorithm("perspective-interp").run(Json::parse(R"({"triangle":[[0,0,0,-1],[4,0,0,0],[0,4,0,-3]],"attrs":[[1],[2],[3]]})"), Numeric::exact)["pixels"].empty());
+  CHECK(find_algorithm("perspective-interp").open(Json::parse(R"({"triangle":[[0,0,0,-1],[4,0,0,0],[0,4,0,-3]],"attrs":[[1],[2],[3]]})"), Numeric::exact).run()["pixels"].empty());
 }

@@ -227,7 +227,7 @@ TEST_CASE("raster-clip: the work is bounded by the screen: a triangle 10^6 and 1
     const Tri t = huge_crossing(rng, s, n % 2 ? 1000000 : 10000000000, 4);
     Json in{{"viewport", {{"min", {s.i0, s.j0}}, {"max", {s.i1, s.j1}}}}};
     for (const auto& v : t) in["triangle"].push_back({v.x.get_str(), v.y.get_str()});
-    const Recorded rec = alg.record(in, Numeric::exact);
+    const Recorded rec = alg.open(in, Numeric::exact).record();
     // Per covered pixel on screen a plot and a step, per row on screen a row, a span and an
     // advance, and six more: the sort, the screen, three edges and done.
     const std::size_t w = s.i1 - s.i0, h = s.j1 - s.j0, pixels = rec.result["pixels"].size();
@@ -305,11 +305,11 @@ TEST_CASE("raster-clip: every corpus case in exact, filtered and traced equals t
   std::map<std::string, Json> got;
   for (const CorpusCase& c : raster_corpus()) {
     INFO(c.name);
-    const Json want = alg.oracle(c.input);
-    CHECK(alg.run(c.input, Numeric::exact) == want);
-    CHECK(alg.run(c.input, Numeric::filtered)["pixels"] == want["pixels"]);  // its values are the filter's approximations
+    const Json want = alg.open(c.input).oracle();
+    CHECK(alg.open(c.input, Numeric::exact).run() == want);
+    CHECK(alg.open(c.input, Numeric::filtered).run()["pixels"] == want["pixels"]);  // its values are the filter's approximations
     std::stringstream trace;
-    write_trace(alg, Numeric::exact, c.input, trace);
+    write_trace(alg.open(c.input, Numeric::exact), trace);
     CHECK(check_trace(trace, false).status == 0);
     got[c.name] = want;
   }

@@ -38,10 +38,10 @@ TEST_CASE("lobe: every direction is the model at that eye, in the plane of incid
     for (Numeric mode : {Numeric::f32, Numeric::f64, Numeric::reference}) {
       const SweepGrid g = lobe_grid(mode);
       std::vector<float> out;
-      alg.lobe.run(input, mode, g, out);
+      alg.open(input, mode).lobe(g, out);
       REQUIRE(out.size() == 37);
       for (int i = 0; i < g.w; ++i) {
-        const Json sample = alg.lobe.sample(input, g, i, 0);
+        const Json sample = alg.open(input).lobe_sample(g, i);
         const auto e = vec(sample["e"]);
         INFO(id << " " << numeric_name(mode) << " at " << g.x(i) << " degrees: " << sample.dump());
         CHECK(std::fabs(len(e) - 1) < 1e-6);
@@ -52,7 +52,7 @@ TEST_CASE("lobe: every direction is the model at that eye, in the plane of incid
         CHECK(std::fabs(std::acos(std::clamp(dot3(e, n) / len(n), -1.0, 1.0)) * 180 / 3.141592653589793 - std::fabs(g.x(i))) < 1e-4);
         const double side = dot3(e, l) - dot3(e, n) * dot3(n, l) / dot3(n, n);  // e's tangent part along l's
         if (std::fabs(g.x(i)) > 1) CHECK((side < 0) == (g.x(i) > 0));
-        CHECK(out[std::size_t(i)] == static_cast<float>(alg.run(sample, mode)["value"].get<double>()));
+        CHECK(out[std::size_t(i)] == static_cast<float>(alg.open(sample, mode).run()["value"].get<double>()));
       }
     }
   }
@@ -65,30 +65,30 @@ TEST_CASE("lobe: the reference lobes of Phong and Blinn-Phong peak at the mirror
     Json in = base;
     in["shininess"] = 30;
     std::vector<float> out;
-    find_algorithm(id).lobe.run(in, Numeric::reference, g, out);
+    find_algorithm(id).open(in, Numeric::reference).lobe(g, out);
     const auto top = std::size_t(std::max_element(out.begin(), out.end()) - out.begin());
     INFO(id);
     CHECK(g.x(int(top)) == 45);
     CHECK(out[top] == Approx(1).epsilon(1e-6));
     CHECK(out[90] < out[top]);  // the normal direction is dimmer
-    const auto angles = find_algorithm(id).lobe.angles(in);
+    const auto angles = find_algorithm(id).open(in).lobe_angles();
     REQUIRE(angles);
     CHECK((*angles)[0] == Approx(-45));  // the light, on the other side
     CHECK((*angles)[1] == Approx(0).margin(1e-9));
   }
   std::vector<float> flat;
-  find_algorithm("lambert").lobe.run(base, Numeric::reference, g, flat);
+  find_algorithm("lambert").open(base, Numeric::reference).lobe(g, flat);
   for (std::size_t i = 1; i + 1 < flat.size(); ++i) CHECK(flat[i] == Approx(std::sqrt(0.5)).epsilon(1e-7));
   // A denormal normal and a huge light give the same plane, and the same flat lobe.
   const Json scaled = parse_json_text(R"({"n":[0,0,1e-310],"l":[1e14,0,1e14],"e":[0,0,1]})", "t");
   std::vector<float> flat2;
-  find_algorithm("lambert").lobe.run(scaled, Numeric::reference, g, flat2);
+  find_algorithm("lambert").open(scaled, Numeric::reference).lobe(g, flat2);
   CHECK(flat2 == flat);
-  CHECK((*find_algorithm("lambert").lobe.angles(scaled))[0] == Approx(-45));
+  CHECK((*find_algorithm("lambert").open(scaled).lobe_angles())[0] == Approx(-45));
   // An eye off the plane has no angle.
   Json off = base;
   off["e"] = {0, 1, 1};
-  CHECK(std::isnan((*find_algorithm("lambert").lobe.angles(off))[1]));
+  CHECK(std::isnan((*find_algorithm("lambert").open(off).lobe_angles())[1]));
 }
 
 TEST_CASE("sliders: every declared parameter's range is valid input where the example has it", "[lighting][params]") {
@@ -106,7 +106,7 @@ TEST_CASE("sliders: every declared parameter's range is valid input where the ex
         for (double v : {p.lo, p.hi, p.logarithmic ? std::sqrt(std::max(p.lo, 1e-3) * p.hi) : (p.lo + p.hi) / 2}) {
           in[ptr] = v;
           INFO(alg.id << " " << p.pointer << " = " << v);
-          for (Numeric n : alg.numerics) CHECK_NOTHROW(alg.validate(in, n));
+          for (Numeric n : alg.numerics) CHECK_NOTHROW((void)alg.open(in, n));
           ++checked;
         }
       }

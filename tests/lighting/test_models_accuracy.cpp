@@ -58,7 +58,7 @@ TEST_CASE("lighting: the hard-case corpus, reference equal to the oracle and eve
     CHECK(close(ref, o.value));
     CHECK(sgn(ref) >= 0);
     for (const char* mode : {"float", "double", "reference"}) {
-      const Json r = alg.run(c.input, *parse_numeric(mode));
+      const Json r = alg.open(c.input, *parse_numeric(mode)).run();
       CHECK(r.at("lit") == o.lit);
       CHECK(r.at("seen") == o.seen);
       if (std::string_view(mode) == "reference") CHECK(!r.contains("failure"));

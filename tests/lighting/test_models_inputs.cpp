@@ -53,7 +53,7 @@ TEST_CASE("lighting: bad model input is a one-line InputError in every mode", "[
     for (Numeric n : alg.numerics) {
       std::string what;
       try {
-        alg.validate(parse_json_text(b.input, "input"), n);
+        (void)alg.open(parse_json_text(b.input, "input"), n);
       } catch (const InputError& e) {
         what = e.what();
       }

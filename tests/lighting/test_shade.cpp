@@ -183,14 +183,14 @@ TEST_CASE("shade: bad input is one InputError line", "[lighting][shade]") {
   };
   for (const auto& [why, j] : cases) {
     INFO(why);
-    for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::reference}) CHECK_THROWS_AS(a->validate(j, n), InputError);
+    for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::reference}) CHECK_THROWS_AS((void)(*a).open(j, n), InputError);
     try {
-      a->validate(j, Numeric::f64);
+      (void)(*a).open(j, Numeric::f64);
     } catch (const InputError& e) {
       CHECK(std::string(e.what()).find('\n') == std::string::npos);
     }
   }
-  CHECK_NOTHROW(a->validate(good, Numeric::reference));
+  CHECK_NOTHROW((void)(*a).open(good, Numeric::reference));
   // The CLI: exit 2, one line, and no partial trace file.
   const auto out = std::filesystem::temp_directory_path() / "sw_shade_bad_input.jsonl";
   std::filesystem::remove(out);

@@ -23,7 +23,7 @@ Json vec(std::initializer_list<Rational> v) {
 
 double toon(const Json& n, const Json& l, const Json& e, const Rational& cutoff, Numeric mode) {
   const Json in = {{"n", n}, {"l", l}, {"e", e}, {"diffuse", "oren-nayar"}, {"sigma", "1/2"}, {"cutoff", cutoff.get_str()}};
-  return find_algorithm("toon").run(in, mode)["value"].get<double>();
+  return find_algorithm("toon").open(in, mode).run()["value"].get<double>();
 }
 
 }  // namespace
@@ -93,7 +93,7 @@ TEST_CASE("toon over oren-nayar: away from ties the exact cut agrees with the 40
       if (c < 0 || c > 1) continue;
       if (abs(Rational(d - c)) < Rational(1) / Rational(mpz_class(1) << 350)) continue;  // within the oracle's rounding
       const Json in_toon = {{"n", n}, {"l", l}, {"e", e}, {"diffuse", "oren-nayar"}, {"sigma", sigma.get_str()}, {"cutoff", c.get_str()}};
-      const double t = find_algorithm("toon").run(in_toon, Numeric::reference)["value"].get<double>();
+      const double t = find_algorithm("toon").open(in_toon, Numeric::reference).run()["value"].get<double>();
       INFO(in_toon.dump() << " d = " << d.get_d());
       CHECK(t == (d >= c ? 1 : 0));
       ++decided;

@@ -190,7 +190,7 @@ TEST_CASE("rays: camera-ray, every reference step value and geometry item matche
   int exact_frames = 0, rounded_frames = 0, outside_circle = 0, centre = 0;
   for (const Case& c : cases) {
     INFO("camera-ray, " << c.name << ": " << c.input.dump());
-    find_algorithm("camera-ray").validate(c.input, Numeric::reference);
+    (void)find_algorithm("camera-ray").open(c.input, Numeric::reference);
     Recorder<Q> t;
     const bool valid = record_direct("camera-ray", c.input, t).hit;
     Expected want;
@@ -218,7 +218,7 @@ TEST_CASE("rays: sphere inverse mapping, every reference step value and geometry
   int poles = 0, seam = 0, y_axis = 0, rounded = 0, exact_normal = 0;
   for (const Case& c : cases) {
     INFO("sphere-uv, " << c.name << ": " << c.input.dump());
-    find_algorithm("sphere-uv").validate(c.input, Numeric::reference);
+    (void)find_algorithm("sphere-uv").open(c.input, Numeric::reference);
     Recorder<Q> t;
     record_direct("sphere-uv", c.input, t);
     Expected want;

@@ -15,7 +15,7 @@ TEST_CASE("rays: camera rays, pixel centres and projections", "[rays]") {
     in["camera"]["fov"] = fov;
     in["pixel"] = {i, j};
     in["size"] = {w, h};
-    return cam.run(in, n);
+    return cam.open(in, n).run();
   };
   for (const char* proj : {"perspective", "fisheye", "cylindrical"}) {
     // The centre pixel of an odd image looks straight along -n.
@@ -41,19 +41,19 @@ TEST_CASE("rays: camera rays, pixel centres and projections", "[rays]") {
   // Bad input: exact mode, pixel outside, vup parallel to vpn, unknown projection.
   CHECK_THROWS_AS(parse_numeric_for(cam, "exact"), InputError);
   Json bad = Json::parse(R"({"camera":{"eye":[1,2,3],"vpn":[0,0,2],"vup":[0,0,1],"d":2,"fov":90},"pixel":[0,0],"size":[1,1],"projection":"perspective"})");
-  CHECK_THROWS_AS(cam.validate(bad, Numeric::f64), InputError);
+  CHECK_THROWS_AS((void)cam.open(bad, Numeric::f64), InputError);
   bad["camera"]["vup"] = {0, 1, 0};
   bad["pixel"] = {1, 0};
-  CHECK_THROWS_AS(cam.validate(bad, Numeric::f64), InputError);
+  CHECK_THROWS_AS((void)cam.open(bad, Numeric::f64), InputError);
   bad["pixel"] = {0, 0};
   bad["projection"] = "orthographic";
-  CHECK_THROWS_AS(cam.validate(bad, Numeric::f64), InputError);
+  CHECK_THROWS_AS((void)cam.open(bad, Numeric::f64), InputError);
 }
 
 TEST_CASE("rays: sphere inverse mapping, the seam and the poles", "[rays]") {
   const Algorithm& uv = find_algorithm("sphere-uv");
   auto run = [&](double x, double y, double z) {
-    return uv.run(Json{{"sphere", {{"c", {0, 0, 0}}, {"r", 1}}}, {"point", {x, y, z}}}, Numeric::f64);
+    return uv.open(Json{{"sphere", {{"c", {0, 0, 0}}, {"r", 1}}}, {"point", {x, y, z}}}, Numeric::f64).run();
   };
   const double pi = 3.14159265358979323846;
   const Json seam = run(-0.6, 0, 0.8);  // on the seam: atan2(+0, -0.6) = +pi, so u = 1
@@ -68,6 +68,6 @@ TEST_CASE("rays: sphere inverse mapping, the seam and the poles", "[rays]") {
   CHECK(std::fabs(east["u"].get<double>() - 0.75) < 1e-15);
   CHECK(east["v"].get<double>() == 0.5);
   CHECK(east["normal"] == Json::array({0.0, 1.0, 0.0}));
-  CHECK_THROWS_AS(uv.validate(Json::parse(R"({"sphere":{"c":[1,1,1],"r":1},"point":[1,1,1]})"), Numeric::f64), InputError);
+  CHECK_THROWS_AS((void)uv.open(Json::parse(R"({"sphere":{"c":[1,1,1],"r":1},"point":[1,1,1]})"), Numeric::f64), InputError);
   for (const BenchRow& row : uv.bench(Numeric::f64, 1, "")) CHECK(row.max_error < 16);
 }

@@ -19,12 +19,12 @@ TEST_CASE("rays: exact step replay, the catalog records what the headers record"
     for (Case& c : corpus_cases("")) cases.push_back(std::move(c));
     for (const Case& c : cases) {
       try {
-        alg.validate(c.input, reference ? Numeric::reference : Numeric::exact);
+        (void)alg.open(c.input, reference ? Numeric::reference : Numeric::exact);
       } catch (const InputError&) {
         continue;  // another primitive's case
       }
       INFO(alg.id << ", " << c.name);
-      const Recorded rec = alg.record(c.input, reference ? Numeric::reference : Numeric::exact);
+      const Recorded rec = alg.open(c.input, reference ? Numeric::reference : Numeric::exact).record();
       const auto& a = dynamic_cast<const Recorder<Q>&>(*rec.trace);
       Recorder<Q> b;
       record_direct(alg.id, c.input, b);
@@ -55,14 +55,14 @@ TEST_CASE("rays: stepwise check accepts exact traces and rejects a tampered one"
   for (const Json& c : read_jsonl("corpus.jsonl"))
     for (const std::string& id : kAlgs.at(c["primitive"])) {
       std::stringstream ss;
-      write_trace(find_algorithm(id), Numeric::exact, c["input"], ss);
+      write_trace(find_algorithm(id).open(c["input"], Numeric::exact), ss);
       const CheckReport rep = check_trace(ss, false);
       INFO(id << " " << c["name"].get<std::string>() << ": " << rep.message);
       CHECK(rep.status == 0);
     }
   std::stringstream ss;
   const Json in = Json::parse(R"({"ray":{"o":[0,0,5],"d":[0,0,-1]},"sphere":{"c":[0,0,0],"r":1}})");
-  write_trace(find_algorithm("ray-sphere-stable"), Numeric::exact, in, ss);
+  write_trace(find_algorithm("ray-sphere-stable").open(in, Numeric::exact), ss);
   std::string text = ss.str();
   const auto pos = text.find("\"t\":\"4\"");
   REQUIRE(pos != std::string::npos);

@@ -32,14 +32,14 @@ TEST_CASE("rays: every corpus case: exact and filtered equal the oracle and floa
     for (const std::string& id : kAlgs.at(prim)) {
       const Algorithm& alg = find_algorithm(id);
       INFO(c["name"].get<std::string>() << " " << id);
-      const Json want = alg.oracle(c["input"]);
-      const Json exact = alg.run(c["input"], Numeric::exact);
+      const Json want = alg.open(c["input"]).oracle();
+      const Json exact = alg.open(c["input"], Numeric::exact).run();
       CHECK(same_result(exact, want));
-      const Json filtered = alg.run(c["input"], Numeric::filtered);
+      const Json filtered = alg.open(c["input"], Numeric::filtered).run();
       CHECK(filtered["hit"] == want["hit"]);
       if (filtered["fallback"].get<bool>()) CHECK(same_result(filtered, want));
       for (Numeric n : {Numeric::f32, Numeric::f64}) {
-        const Json r = alg.run(c["input"], n);
+        const Json r = alg.open(c["input"], n).run();
         if (r["hit"].get<bool>()) CHECK(std::isfinite(r["t"].get<double>()));
       }
       ++cases;
@@ -54,7 +54,7 @@ TEST_CASE("rays: the named corpus outcomes", "[rays]") {
   for (const Json& c : read_jsonl("corpus.jsonl")) by_name[c["name"]] = c;
   auto oracle_hit = [&](const char* name) {
     const Json& c = by_name.at(name);
-    return find_algorithm(kAlgs.at(c["primitive"])[0]).oracle(c["input"])["hit"].get<bool>();
+    return find_algorithm(kAlgs.at(c["primitive"])[0]).open(c["input"]).oracle()["hit"].get<bool>();
   };
   CHECK(oracle_hit("crack-a"));
   CHECK(oracle_hit("crack-b"));
@@ -73,18 +73,18 @@ TEST_CASE("rays: the named corpus outcomes", "[rays]") {
   CHECK_FALSE(oracle_hit("plane-in"));
   CHECK(oracle_hit("plane-nearly-parallel"));
   // Interpolated attributes at b = (1/4, 1/4, 1/2): uv = (1/4, 1/2), normal = (1/6, 1/3 + 0.15, 1/3 + 0.25 + 0.2).
-  const Json attr = find_algorithm("ray-triangle-watertight").run(by_name.at("attr-uv-normal")["input"], Numeric::exact);
+  const Json attr = find_algorithm("ray-triangle-watertight").open(by_name.at("attr-uv-normal")["input"], Numeric::exact).run();
   CHECK(q(attr["attr"][0]) == Rational(1, 4));
   CHECK(q(attr["attr"][1]) == Rational(1, 2));
   CHECK(q(attr["attr"][2]) == Rational(1, 6));
-  CHECK_FALSE(find_algorithm("ray-triangle-mt").run(by_name.at("attr-miss")["input"], Numeric::exact).contains("attr"));
+  CHECK_FALSE(find_algorithm("ray-triangle-mt").open(by_name.at("attr-miss")["input"], Numeric::exact).run().contains("attr"));
   // The stable sphere survives the far small sphere in double; the quadratic does not have to.
   const Json far = by_name.at("far-1e8")["input"];
-  CHECK(find_algorithm("ray-sphere-stable").run(far, Numeric::f64)["hit"].get<bool>());
+  CHECK(find_algorithm("ray-sphere-stable").open(far, Numeric::f64).run()["hit"].get<bool>());
   // The box never produces NaN on zero / -0 components with the origin on a slab plane.
   for (const char* name : {"box-axis-zero-on-slab", "box-neg-zero"})
     for (Numeric n : {Numeric::f32, Numeric::f64}) {
-      const Json r = find_algorithm("ray-box").run(by_name.at(name)["input"], n);
+      const Json r = find_algorithm("ray-box").open(by_name.at(name)["input"], n).run();
       REQUIRE(r["hit"].get<bool>());
       CHECK(std::isfinite(r["t_near"].get<double>()));
       CHECK(std::isfinite(r["t_far"].get<double>()));
@@ -96,7 +96,7 @@ TEST_CASE("rays: bad input is an InputError (exit 2 from the CLI)", "[rays]") {
     for (const std::string& id : kAlgs.at(c["primitive"]))
       for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
         INFO(c["why"].get<std::string>() << " " << id);
-        CHECK_THROWS_AS(find_algorithm(id).validate(c["input"], n), InputError);
+        CHECK_THROWS_AS((void)find_algorithm(id).open(c["input"], n), InputError);
       }
   const std::string cmd = std::string(SW_STEPWISE_EXE) +
                           " trace ray-sphere-stable --input '{\"ray\":{\"o\":[0,0,0],\"d\":[0,0,0]},\"sphere\":{\"c\":[0,0,5],\"r\":1}}'"

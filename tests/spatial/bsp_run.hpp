@@ -48,7 +48,7 @@ inline Verdict judge(const std::string& id, const std::vector<Seg>& segs, std::o
   Verdict v;
   Json r;
   try {
-    r = find_algorithm(id).run(input_json(segs, eye), n);
+    r = find_algorithm(id).open(input_json(segs, eye), n).run();
   } catch (const InputError&) {
     v.budget = true;
     return v;

@@ -41,7 +41,7 @@ inline std::vector<oracle::Triangle3> exact_tris(const Mesh& m) {
 // and, in exact mode, t; any hit: hit iff the closest hit has t < t_max, and the hit reported
 // really is one before t_max).
 inline bool judge(const Mesh& m, const std::vector<oracle::Triangle3>& tris, const RayIn& r, Numeric n, bool any = false, double t_max = 0, Json* out = nullptr) {
-  const Json res = find_algorithm("bvh-traverse").run(query_json(m, r, any, t_max), n);
+  const Json res = find_algorithm("bvh-traverse").open(query_json(m, r, any, t_max), n).run();
   if (out) *out = res;
   const Vec3<Rational> o = spatial::vec_from<Rational, 3>(r.o), d = spatial::vec_from<Rational, 3>(r.d);
   const oracle::ClosestHit want = oracle::closest_hit(o, d, tris);

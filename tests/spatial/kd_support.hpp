@@ -24,7 +24,7 @@ inline void check_refused(const Algorithm& a, std::initializer_list<const char*>
   for (const char* in : bad) {
     INFO(in);
     try {
-      a.validate(Json::parse(in), Numeric::exact);
+      (void)a.open(Json::parse(in), Numeric::exact);
       FAIL("accepted");
     } catch (const InputError& e) {
       CHECK(std::string(e.what()).find('\n') == std::string::npos);

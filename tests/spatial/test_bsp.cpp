@@ -46,7 +46,7 @@ void run_case(const Case& c, std::map<Numeric, Failures>& failures) {
       CHECK(v.ok());
       r.erase("fallback");
       if (n == Numeric::exact) CHECK(r == exact);
-      if (n == Numeric::filtered) exact = find_algorithm("bsp-painter").run(input_json(c.segs, c.eye), Numeric::exact);
+      if (n == Numeric::filtered) exact = find_algorithm("bsp-painter").open(input_json(c.segs, c.eye), Numeric::exact).run();
       if (n == Numeric::filtered) CHECK(r == exact);
     } else {
       failures[n].cover += !v.cover.empty();
@@ -157,7 +157,7 @@ TEST_CASE("bsp: bad input is one line naming the problem", "[spatial][spatial-bs
   const Algorithm& painter = find_algorithm("bsp-painter");
   auto message = [](const Algorithm& a, const std::string& text) {
     try {
-      a.validate(Json::parse(text), Numeric::exact);
+      (void)a.open(Json::parse(text), Numeric::exact);
     } catch (const InputError& e) {
       return std::string(e.what());
     }

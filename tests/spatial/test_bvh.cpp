@@ -23,7 +23,7 @@ void run_all(const Mesh& m, const std::vector<RayIn>& rays, Tally& tally, bool a
   const auto tris = exact_tris(m);
   for (const Numeric n : kModes) {
     INFO("mode " << numeric_name(n));
-    CHECK(tree_invariants(m, find_algorithm("bvh-build").run(mesh_json(m), n), n) == "");
+    CHECK(tree_invariants(m, find_algorithm("bvh-build").open(mesh_json(m), n).run(), n) == "");
   }
   for (const RayIn& r : rays) {
     ++tally.cases;
@@ -124,7 +124,7 @@ TEST_CASE("bvh: 10^4 identical triangles: the build stops, the lowest id wins", 
   m.v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   m.f.assign(10000, {0, 1, 2});
   for (const Numeric n : {Numeric::f64, Numeric::exact}) {
-    const Json b = find_algorithm("bvh-build").run(mesh_json(m), n);
+    const Json b = find_algorithm("bvh-build").open(mesh_json(m), n).run();
     CHECK(tree_invariants(m, b, n) == "");
     CHECK(b["depth"].get<int>() <= spatial::kBvhMaxDepth);
     CHECK(b["leaves"].get<int>() >= 10000 / spatial::kBvhMaxLeaf);
@@ -136,7 +136,7 @@ TEST_CASE("bvh: 10^4 identical triangles: the build stops, the lowest id wins", 
     tiny.v.push_back({x, 0, 0}), tiny.v.push_back({x, 1, 0}), tiny.v.push_back({x, 0, 1});
     tiny.f.push_back({static_cast<std::int32_t>(base), static_cast<std::int32_t>(base) + 1, static_cast<std::int32_t>(base) + 2});
   }
-  for (const Numeric n : kModes) CHECK(tree_invariants(tiny, find_algorithm("bvh-build").run(mesh_json(tiny), n), n) == "");
+  for (const Numeric n : kModes) CHECK(tree_invariants(tiny, find_algorithm("bvh-build").open(mesh_json(tiny), n).run(), n) == "");
   Json r;
   const auto tris = exact_tris(m);
   CHECK(judge(m, tris, {{0.25, 0.25, 1}, {0, 0, -1}}, Numeric::exact, false, 0, &r));
@@ -170,19 +170,19 @@ TEST_CASE("bvh: bad inputs are one-line errors", "[spatial][spatial-bvh]") {
     return j;
   };
   const Algorithm& t = find_algorithm("bvh-traverse");
-  CHECK_THROWS_AS(t.validate(with({{"any", true}}), Numeric::exact), InputError);                   // no t_max
-  CHECK_THROWS_AS(t.validate(with({{"any", true}, {"t_max", 0}}), Numeric::exact), InputError);   // t_max <= 0
-  CHECK_THROWS_AS(t.validate(with({{"t_max", 1}}), Numeric::exact), InputError);                  // t_max without any
-  CHECK_THROWS_AS(t.validate(with({{"any", 1}, {"t_max", 1}}), Numeric::exact), InputError);      // any not a boolean
-  CHECK_THROWS_AS(t.validate(with({{"ray", {{"o", {0, 0, 1}}, {"d", {0, 0, 0}}}}}), Numeric::exact), InputError);
-  CHECK_THROWS_AS(t.validate(with({{"ray", {{"o", {0, 0, "nan"}}, {"d", {0, 0, 1}}}}}), Numeric::exact), InputError);
-  CHECK_THROWS_AS(t.validate(tri, Numeric::exact), InputError);  // no ray
+  CHECK_THROWS_AS((void)t.open(with({{"any", true}}), Numeric::exact), InputError);                   // no t_max
+  CHECK_THROWS_AS((void)t.open(with({{"any", true}, {"t_max", 0}}), Numeric::exact), InputError);   // t_max <= 0
+  CHECK_THROWS_AS((void)t.open(with({{"t_max", 1}}), Numeric::exact), InputError);                  // t_max without any
+  CHECK_THROWS_AS((void)t.open(with({{"any", 1}, {"t_max", 1}}), Numeric::exact), InputError);      // any not a boolean
+  CHECK_THROWS_AS((void)t.open(with({{"ray", {{"o", {0, 0, 1}}, {"d", {0, 0, 0}}}}}), Numeric::exact), InputError);
+  CHECK_THROWS_AS((void)t.open(with({{"ray", {{"o", {0, 0, "nan"}}, {"d", {0, 0, 1}}}}}), Numeric::exact), InputError);
+  CHECK_THROWS_AS((void)t.open(tri, Numeric::exact), InputError);  // no ray
   const Algorithm& b = find_algorithm("bvh-build");
-  CHECK_THROWS_AS(b.validate(with({}), Numeric::exact), InputError);  // a ray is not a build's input
-  CHECK_THROWS_AS(b.validate(Json{{"triangles", Json::array()}}, Numeric::exact), InputError);
-  CHECK_THROWS_AS(b.validate(Json{{"triangles", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 1e300}}}}}, Numeric::exact), InputError);
+  CHECK_THROWS_AS((void)b.open(with({}), Numeric::exact), InputError);  // a ray is not a build's input
+  CHECK_THROWS_AS((void)b.open(Json{{"triangles", Json::array()}}, Numeric::exact), InputError);
+  CHECK_THROWS_AS((void)b.open(Json{{"triangles", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 1e300}}}}}, Numeric::exact), InputError);
   try {
-    t.validate(with({{"any", true}}), Numeric::exact);
+    (void)t.open(with({{"any", true}}), Numeric::exact);
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find('\n') == std::string::npos);
     CHECK(std::string(e.what()).find("t_max") != std::string::npos);

@@ -226,7 +226,7 @@ TEST_CASE("bvh-build: every step of exact traces against the model", "[spatial][
   same.f.assign(20, {0, 1, 2});
   inputs.push_back(mesh_json(same));
   for (const Json& in : inputs) {
-    const Recorded rec = a.record(in, Numeric::exact);
+    const Recorded rec = a.open(in, Numeric::exact).record();
     const auto& t = dynamic_cast<const Recorder<Rational>&>(*rec.trace);
     replay_build(t, 0, t.size(), triangles_of(in), rec.result);
   }
@@ -245,7 +245,7 @@ TEST_CASE("bvh-traverse: every step of exact traces against the model", "[spatia
   }
   for (const Json& in : inputs) {
     INFO(in.dump());
-    const Recorded rec = a.record(in, Numeric::exact);
+    const Recorded rec = a.open(in, Numeric::exact).record();
     const auto& t = dynamic_cast<const Recorder<Rational>&>(*rec.trace);
     const auto tris = triangles_of(in);
     const spatial::RayIn ray = spatial::parse_ray(in["ray"], "ray");
@@ -255,7 +255,7 @@ TEST_CASE("bvh-traverse: every step of exact traces against the model", "[spatia
     // The tree, from bvh-build's own (replayed) run on the same triangles.
     Json b_in = in;
     b_in.erase("ray"), b_in.erase("any"), b_in.erase("t_max");
-    const Json tree = find_algorithm("bvh-build").run(b_in, Numeric::exact);
+    const Json tree = find_algorithm("bvh-build").open(b_in, Numeric::exact).run();
     auto node_box = [&](std::int64_t n) {
       const Json& nd = tree["tree"][static_cast<std::size_t>(n)];
       QBox b;

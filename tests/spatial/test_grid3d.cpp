@@ -100,7 +100,7 @@ TEST_CASE("grid-traverse-3d: every mode against the exact oracle, robust modes 0
     const auto want_float = float_exact ? want : oracle::grid_cells_3d(as_float(s.p0), as_float(s.p1));
     cells += want.size();
     for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
-      const Json r = alg.run(input_of(s), n);
+      const Json r = alg.open(input_of(s), n).run();
       const auto got = to_cells(r);
       if (n == Numeric::filtered && r.at("fallback") == true) ++tie_cases;
       if (got != want) {
@@ -144,7 +144,7 @@ TEST_CASE("grid oracle: the column sweep equals the brute force over the boundin
 
 TEST_CASE("grid-traverse-3d: the hand-checked tie rules of the 2D walk, extended", "[spatial][spatial-pt][spatial-grid]") {
   const Algorithm& alg = find_algorithm("grid-traverse-3d");
-  auto cells = [&](const char* in) { return to_cells(alg.run(Json::parse(in), Numeric::exact)); };
+  auto cells = [&](const char* in) { return to_cells(alg.open(Json::parse(in), Numeric::exact).run()); };
   using C = std::vector<oracle::GridCell>;
   // Through the corner (1/2, 1/2, 1/2) moving (+,+,+): straight from (0,0,0) to (1,1,1).
   CHECK(cells(R"({"p0":[0,0,0],"p1":[1.25,1.25,1.25]})") == C{{0, 0, 0}, {1, 1, 1}});
@@ -165,7 +165,7 @@ TEST_CASE("grid-traverse-3d: bad input is one line naming the problem", "[spatia
   const Algorithm& alg = find_algorithm("grid-traverse-3d");
   auto err = [&](const char* in) -> std::string {
     try {
-      alg.validate(Json::parse(in), Numeric::exact);
+      (void)alg.open(Json::parse(in), Numeric::exact);
     } catch (const InputError& e) {
       return e.what();
     }

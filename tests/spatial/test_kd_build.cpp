@@ -20,7 +20,7 @@ void check_mesh_all_modes(const Mesh& m, std::array<std::size_t, 2>& rounded_vio
   for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
     INFO(numeric_name(n) << ", " << m.size() << " triangles");
     Violations v;
-    check_triangle_tree(read_tree(build_alg().run(in, n)), m, v);
+    check_triangle_tree(read_tree(build_alg().open(in, n).run()), m, v);
     if (n == Numeric::filtered || n == Numeric::exact) {
       CHECK(v.cells == 0);
       CHECK(v.missing == 0);
@@ -44,7 +44,7 @@ void check_points_all_modes(const Json& pts, std::array<std::size_t, 2>& rounded
   for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
     INFO(numeric_name(n) << ", " << pts.size() << " points of " << pts[0].size());
     Violations v;
-    check_point_tree(read_tree(build_alg().run(in, n)), exact, v);
+    check_point_tree(read_tree(build_alg().open(in, n).run()), exact, v);
     if (n == Numeric::filtered || n == Numeric::exact) {
       CHECK(v.cells == 0);
       CHECK(v.held == 0);
@@ -121,13 +121,13 @@ TEST_CASE("kd-build: 10^4 identical points stop at once, and with one more point
     Json pts = Json::array();
     for (int i = 0; i < 10000; ++i) pts.push_back(dim == 2 ? Json{0.25, -3} : Json{0.25, -3, 7});
     for (Numeric n : {Numeric::f64, Numeric::exact}) {
-      const Json r = build_alg().run({{"points", pts}}, n);
+      const Json r = build_alg().open({{"points", pts}}, n).run();
       CHECK(r["nodes"] == 1);
       CHECK(r["depth"] == 0);
       CHECK(r["tree"][0]["prims"].size() == 10000);
     }
     pts.push_back(dim == 2 ? Json{1, 1} : Json{1, 1, 1});
-    const Json r = build_alg().run({{"points", pts}}, Numeric::filtered);
+    const Json r = build_alg().open({{"points", pts}}, Numeric::filtered).run();
     CHECK(r["depth"].get<int>() <= kd_max_depth(10001));
     Violations v;
     check_point_tree(read_tree(r), exact_points(pts), v);
@@ -161,7 +161,7 @@ TEST_CASE("kd-build: bad input is one line, and an input beyond the work budget 
   for (int i = 0; i < 50000; ++i) pts.push_back({grid_coord(rng, 0, 1, 20), grid_coord(rng, 0, 1, 20)});
   const Json big{{"points", pts}};
   // About 4.8 million estimated steps: over the default work budget (docs/cli.md), within a raised one.
-  CHECK_THROWS_WITH(check_budget(a, big, Numeric::f64, Budget{}), Catch::Contains("steps, more than the budget of 4000000 (--max-steps raises it)"));
-  CHECK_NOTHROW(check_budget(a, big, Numeric::f64, Budget{5'000'000}));
-  CHECK(a.run(big, Numeric::f64)["leaves"].get<int>() > 1000);
+  CHECK_THROWS_WITH(a.open(big, Numeric::f64).check_budget(Budget{}), Catch::Contains("steps, more than the budget of 4000000 (--max-steps raises it)"));
+  CHECK_NOTHROW(a.open(big, Numeric::f64).check_budget(Budget{5'000'000}));
+  CHECK(a.open(big, Numeric::f64).run()["leaves"].get<int>() > 1000);
 }

@@ -130,9 +130,9 @@ TEST_CASE("kd-nearest: every k on a small set with duplicates, identical points,
   CHECK(wrong[2] + wrong[3] == 0);
   const Algorithm& a = find_algorithm("kd-nearest");
   const Json in = Json::parse(a.example);
-  const Json want = a.oracle(in);
-  for (Numeric n : {Numeric::f64, Numeric::filtered, Numeric::exact}) CHECK(a.run(in, n)["ids"] == want["ids"]);
-  CHECK(a.run(in, Numeric::exact)["d2"] == want["d2"]);
+  const Json want = a.open(in).oracle();
+  for (Numeric n : {Numeric::f64, Numeric::filtered, Numeric::exact}) CHECK(a.open(in, n).run()["ids"] == want["ids"]);
+  CHECK(a.open(in, Numeric::exact).run()["d2"] == want["d2"]);
   check_refused(a, {R"({"points":[[0,0],[1,1]],"query":[0,0],"k":0})", R"({"points":[[0,0],[1,1]],"query":[0,0],"k":3})",
                     R"({"points":[[0,0],[1,1]],"query":[0,0,0],"k":1})", R"({"points":[[0,0],[1,1]],"query":[0,0],"k":1.5})",
                     R"({"points":[[0,0],[1,1]],"query":[0,"nan"],"k":1})"});

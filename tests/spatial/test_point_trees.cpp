@@ -297,7 +297,7 @@ TEST_CASE("10^4 identical points: the build stops at max_depth", "[spatial][spat
   Json in = {{"points", Json::array()}, {"capacity", 1}, {"max_depth", 24}};
   for (int i = 0; i < 10000; ++i) in["points"].push_back({0.1, 0.2});
   for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
-    const Json r = alg.run(in, n);
+    const Json r = alg.open(in, n).run();
     CHECK(r["nodes"] == 1 + 4 * 24);
     CHECK(r["depth"] == 24);
   }
@@ -306,7 +306,7 @@ TEST_CASE("10^4 identical points: the build stops at max_depth", "[spatial][spat
 TEST_CASE("point trees: bad input is one line naming the problem", "[spatial][spatial-pt]") {
   auto err = [](const char* id, const char* in) -> std::string {
     try {
-      find_algorithm(id).validate(Json::parse(in), Numeric::exact);
+      (void)find_algorithm(id).open(Json::parse(in), Numeric::exact);
     } catch (const InputError& e) {
       return e.what();
     }
@@ -363,8 +363,8 @@ TEST_CASE("octree-build over triangles: copies of one large triangle stop at the
   CHECK(triangle_tree_failures(t, same, 1, 16, true) == 0);
   // Through the catalog: the example and its result in every mode.
   const Algorithm& alg = find_algorithm("octree-build");
-  const Json ex = alg.run(Json::parse(alg.example), Numeric::exact);
-  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered}) CHECK(alg.run(Json::parse(alg.example), n)["tree"].size() == ex["tree"].size());
+  const Json ex = alg.open(Json::parse(alg.example), Numeric::exact).run();
+  for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered}) CHECK(alg.open(Json::parse(alg.example), n).run()["tree"].size() == ex["tree"].size());
 }
 
 TEST_CASE("point trees: the exact build equals the oracle's cell-by-cell statement", "[spatial][spatial-pt]") {
@@ -373,7 +373,7 @@ TEST_CASE("point trees: the exact build equals the oracle's cell-by-cell stateme
   const Algorithm& oct = find_algorithm("octree-build");
   auto same = [](const Algorithm& alg, const Json& in) {
     INFO(alg.id << " " << in.dump().substr(0, 200));
-    CHECK(alg.run(in, Numeric::exact) == alg.oracle(in));
+    CHECK(alg.open(in, Numeric::exact).run() == alg.open(in).oracle());
   };
   for (int set = 0; set < 8; ++set) {
     const int kind = set % 4;

@@ -22,7 +22,7 @@ std::vector<RayNode> tree_of(const Recorded& rec) { return tracer::ray_tree(*rec
 
 TEST_CASE("pixel history: a pixel on the chrome sphere has a depth-2 mirror ray of weight kr", "[tracer][history]") {
   const Algorithm& alg = find_algorithm("whitted");
-  const Recorded rec = alg.record(input(44, 18), Numeric::f64);
+  const Recorded rec = alg.open(input(44, 18), Numeric::f64).record();
   const auto tree = tree_of(rec);
   REQUIRE(!tree.empty());
   CHECK(tree[0].kind == RayNode::Kind::primary);
@@ -52,7 +52,7 @@ TEST_CASE("pixel history: a pixel on the chrome sphere has a depth-2 mirror ray 
 }
 
 TEST_CASE("pixel history: a floor pixel under the water sphere has a blocked shadow ray to the point light", "[tracer][history]") {
-  const Recorded rec = find_algorithm("whitted").record(input(62, 27), Numeric::f64);
+  const Recorded rec = find_algorithm("whitted").open(input(62, 27), Numeric::f64).record();
   const auto tree = tree_of(rec);
   REQUIRE(!tree.empty());
   CHECK(tree[0].object == 0);  // the floor
@@ -83,7 +83,7 @@ TEST_CASE("pixel history: bad input is one line naming the JSON path", "[tracer]
   const Algorithm& alg = find_algorithm("whitted");
   auto message = [&](const std::string& text) {
     try {
-      alg.validate(Json::parse(text), Numeric::f64);
+      (void)alg.open(Json::parse(text), Numeric::f64);
     } catch (const InputError& e) {
       return std::string(e.what());
     }

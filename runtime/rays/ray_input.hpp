@@ -1,11 +1,9 @@
-// What the ray family's two catalog files share: the coordinate bound and the 3D point reader, and
-// their registration (runtime/rays/specs.cpp registers the family).
+// What the ray family's two catalog files share: the coordinate bound and the 3D point reader.
 #pragma once
 #include <array>
 #include <cmath>
 #include <string>
-#include <vector>
-#include "catalog.hpp"
+#include "input.hpp"
 
 namespace sw {
 
@@ -29,8 +27,5 @@ inline Vec3<Rational> point3(const Json& j, const std::string& what, std::array<
 }
 
 }  // namespace rays
-
-void register_ray_intersections(std::vector<Algorithm>& out);  // intersections.cpp
-void register_ray_mappings(std::vector<Algorithm>& out);       // mappings.cpp
 
 }  // namespace sw

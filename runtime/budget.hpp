@@ -1,0 +1,27 @@
+// The work budget of trace, run, check, render and the app (docs/cli.md): the steps an input
+// implies, estimated before running (Run::check_budget), and the bytes written (BudgetedStream,
+// output.hpp). The defaults keep the largest accepted input within about 10 s and 1 GB on a 2-core
+// machine.
+#pragma once
+#include <cstdint>
+#include <initializer_list>
+#include "input.hpp"
+
+namespace sw {
+
+struct Budget {
+  std::uint64_t max_steps = 4'000'000;
+  std::uint64_t max_output = std::uint64_t{1} << 30;
+};
+
+// In exact and filtered modes a step costs more the longer the input's exact numbers: a step counts
+// 1 + (longest string) / kDigitsPerWeight against max_steps (measured on dda-grid-walk: 1.3 us a
+// step at 1 character, 5.5 us at 2000, 12 us at 4000; docs/cli.md).
+inline constexpr std::size_t kDigitsPerWeight = 400;
+std::uint64_t step_weight(const Json& input, Numeric n);
+// The longest string in an input: exact numbers are strings ("p/q", decimals).
+std::size_t longest_string(const Json& j);
+// The product, or UINT64_MAX where it overflows.
+std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors);
+
+}  // namespace sw

@@ -1,0 +1,186 @@
+// Turns a typed Spec (spec.hpp) into its catalog entry, and registers it: a Spec's file ends with
+//   SW_REGISTER(DdaLineSpec);
+// and its family is the folder of that file (runtime/lines/ -> "lines"). The entry's open()
+// builds an OpenSpec<Spec>: the one place where Spec::parse runs, holding the parsed Input for
+// every computation a run handle (run.hpp) asks for.
+#pragma once
+#include <memory>
+#include "bench_harness.hpp"
+#include "core/jsonl_probe.hpp"
+#include "sweep.hpp"
+
+namespace sw {
+
+// A rounded mode that produced NaN or an infinity failed; the result says so, whatever else the
+// Spec reports (docs/trace-format.md). Filtered results say whether exact rationals were needed.
+template <class Spec> Json result_json(const typename Spec::Output& out, Numeric n, bool fell_back) {
+  Json r = Spec::to_json(out);
+  if (encode_nonfinite(r) && r.is_object() && !r.contains("failure")) r["failure"] = "nan-or-inf";
+  if (n == Numeric::filtered) r["fallback"] = fell_back;
+  return r;
+}
+
+template <class Spec> class OpenSpec final : public OpenInput {
+  using Input = typename Spec::Input;
+  using Output = typename Spec::Output;
+
+ public:
+  OpenSpec(const Algorithm& alg, const Json& j) : OpenInput(alg, j), in_(Spec::parse(j)) {}
+
+  void admit(Numeric n) const override {
+    if constexpr (names_hook<Spec>(Hook::admit)) Spec::admit(in_, n);
+    else (void)n;
+  }
+  std::optional<std::uint64_t> estimate_steps() const override {
+    if constexpr (names_hook<Spec>(Hook::estimate_steps)) return std::uint64_t(Spec::estimate_steps(in_));
+    else return std::nullopt;
+  }
+  Json run(Numeric n) const override {
+    bool fb;
+    const Output out = compute_mode<Spec>(in_, n, untraced, &fb);
+    return result_json<Spec>(out, n, fb);
+  }
+  void run_to(Numeric n, std::ostream& os) const override {
+    bool fb;
+    const Output out = compute_mode<Spec>(in_, n, untraced, &fb);
+    write_result(out, n, fb, os);
+    os << '\n';
+  }
+  Recorded record(Numeric n) const override {
+    Recorded rec;
+    bool fb;
+    const Output out = compute_mode<Spec>(in_, n, [&](auto t, auto&& compute) {
+      auto r = std::make_unique<Recorder<typename decltype(t)::type>>();
+      // Reserved memory costs nothing until touched; regrowth copies it all.
+      if constexpr (names_hook<Spec>(Hook::estimate_steps)) r->reserve(std::min<std::size_t>(Spec::estimate_steps(in_), std::size_t{1} << 27));
+      auto o = compute(*r);
+      rec.trace = std::move(r);
+      return o;
+    }, &fb);
+    rec.result = result_json<Spec>(out, n, fb);
+    return rec;
+  }
+  void stream(Numeric n, std::ostream& os) const override {
+    bool fb;
+    const Output out = compute_mode<Spec>(in_, n, [&](auto t, auto&& compute) {
+      JsonlProbe<typename decltype(t)::type> probe(os);
+      auto o = compute(probe);
+      probe.finish();
+      return o;
+    }, &fb);
+    os << "{\"result\":";
+    write_result(out, n, fb, os);
+    os << "}\n";
+  }
+  Json oracle() const override {
+    Json r = Spec::to_json(Spec::oracle(in_));
+    encode_nonfinite(r);
+    return r;
+  }
+
+  void sweep(Numeric n, const SweepGrid& g, std::vector<float>& out) const override {
+    if constexpr (names_hook<Spec>(Hook::sweeper)) run_sweep<Spec, ImageSweep>(in_, n, g, out);
+    else OpenInput::sweep(n, g, out);
+  }
+  std::optional<std::array<double, 2>> sweep_marker() const override {
+    if constexpr (names_hook<Spec>(Hook::sweep_marker)) return Spec::sweep_marker(in_);
+    else return std::nullopt;
+  }
+  Json sweep_sample(const SweepGrid& g, int i, int j) const override {
+    if constexpr (names_hook<Spec>(Hook::sweep_input)) return Spec::sweep_input(json(), in_, g, i, j);
+    else return OpenInput::sweep_sample(g, i, j);
+  }
+  void lobe(Numeric n, const SweepGrid& g, std::vector<float>& out) const override {
+    if constexpr (names_hook<Spec>(Hook::lobe)) run_sweep<Spec, LobeSweep>(in_, n, g, out);
+    else OpenInput::lobe(n, g, out);
+  }
+  std::optional<std::array<double, 2>> lobe_angles() const override {
+    if constexpr (names_hook<Spec>(Hook::lobe)) return Spec::lobe_angles(in_);
+    else return std::nullopt;
+  }
+  Json lobe_sample(const SweepGrid& g, int i) const override {
+    if constexpr (names_hook<Spec>(Hook::lobe)) return Spec::lobe_input(json(), in_, g, i);
+    else return OpenInput::lobe_sample(g, i);
+  }
+  std::vector<Polyline2> outline(const Rect2& window, double cell) const override {
+    if constexpr (names_hook<Spec>(Hook::outline)) return Spec::outline(in_, window, cell);
+    else return OpenInput::outline(window, cell);
+  }
+
+ private:
+  static constexpr auto untraced = [](auto, auto&& compute) {
+    NoProbe none;
+    return compute(none);
+  };
+  // The result object, streamed from the output where the Spec writes its members itself.
+  static void write_result(const Output& out, Numeric n, bool fb, std::ostream& os) {
+    if constexpr (names_hook<Spec>(Hook::write_members)) {
+      os << '{';
+      Spec::write_members(out, os);
+      if (n == Numeric::filtered) os << ",\"fallback\":" << (fb ? "true" : "false");
+      os << '}';
+    } else {
+      os << result_json<Spec>(out, n, fb).dump();
+    }
+  }
+
+  Input in_;
+};
+
+template <class Spec> constexpr bool table_lines_exist() {
+  for (std::string_view name : Spec::table_lines)
+    if (!Spec::Algo::listing().find(name)) return false;
+  return true;
+}
+
+// The entry's facts from the Spec (the family is set by the registrar).
+template <AlgorithmSpec Spec> Algorithm make_algorithm() {
+  static_assert(HookNamedAndDefined<hook_mismatch<Spec>()>::ok);
+  Algorithm a;
+  a.id = Spec::Algo::id;
+  a.summary = Spec::Algo::summary;
+  a.listing = Spec::Algo::listing();
+  a.views.assign(Spec::views.begin(), Spec::views.end());
+  if constexpr (names_hook<Spec>(Hook::handles)) a.handles = Spec::handles();
+  a.numerics.assign(Spec::numerics.begin(), Spec::numerics.end());
+  a.example = Spec::example;
+  if constexpr (names_hook<Spec>(Hook::table_lines)) {
+    static_assert(table_lines_exist<Spec>(), "table_lines names a line the listing does not have");
+    a.table_lines.assign(Spec::table_lines.begin(), Spec::table_lines.end());
+  }
+  if constexpr (names_hook<Spec>(Hook::sweeper)) {
+    a.sweep.present = true;
+    a.sweep.marker = names_hook<Spec>(Hook::sweep_marker);
+    a.sweep.sample = names_hook<Spec>(Hook::sweep_input);
+    if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
+    if constexpr (names_hook<Spec>(Hook::sweep_shaded)) a.sweep.shaded = Spec::sweep_shaded;
+  }
+  if constexpr (names_hook<Spec>(Hook::lobe)) a.lobe = {.present = true, .shaded = true, .sample = true, .angles = true};
+  a.outline = names_hook<Spec>(Hook::outline);
+  if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
+  if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;
+  a.fn.open = [](const Algorithm& alg, const Json& j) -> std::shared_ptr<const OpenInput> { return std::make_shared<const OpenSpec<Spec>>(alg, j); };
+  a.fn.canonical = [](const Json& r) -> Json {
+    if constexpr (names_hook<Spec>(Hook::canonical)) return Spec::canonical(r);
+    else return r;
+  };
+  a.fn.bench = &bench_spec<Spec>;
+  a.fn.bench_sets = [] {
+    std::vector<std::string> names;
+    for (const auto& set : Spec::bench_sets()) names.push_back(set.name);
+    return names;
+  };
+  a.fn.step_cost = [](Numeric n) -> std::size_t {
+    if constexpr (names_hook<Spec>(Hook::step_cost)) return Spec::step_cost(n);
+    else return (void)n, 1;
+  };
+  return a;
+}
+
+#define SW_REGISTER_CONCAT2(a, b) a##b
+#define SW_REGISTER_CONCAT(a, b) SW_REGISTER_CONCAT2(a, b)
+// Registers Spec in the catalog, in the family of this file's folder.
+#define SW_REGISTER(Spec) \
+  static const ::sw::Registrar SW_REGISTER_CONCAT(sw_registrar_, __LINE__)(&::sw::make_algorithm<Spec>, __FILE__)
+
+}  // namespace sw
