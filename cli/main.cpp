@@ -29,7 +29,7 @@ template <class F> void write_output(const std::string& path, std::uint64_t max_
     std::cout.flush();
     return;
   }
-  AtomicFile file(path);
+  OutputFile file(path);
   BudgetedStream out(file.stream(), max_output);
   body(static_cast<std::ostream&>(out));
   file.commit();
@@ -62,7 +62,7 @@ void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool j
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run_command(int argc, char** argv) {
   CLI::App app{"stepwise: step through classic graphics algorithms, exactly"};
   app.require_subcommand(1);
 
@@ -219,4 +219,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   return 0;
+}
+
+int main(int argc, char** argv) {
+  guard_standard_descriptors();
+  const int status = run_command(argc, argv);
+  // What a command wrote to standard output must have reached it: a full disk, /dev/full or a
+  // closed descriptor is an error, not a silent truncation.
+  if (const std::string why = stdout_error(); !why.empty()) {
+    std::cerr << "stepwise: error: cannot write to standard output: " << why << '\n';
+    return 2;
+  }
+  return status;
 }

@@ -52,7 +52,7 @@ void parse_size(const std::string& size, std::int64_t& w, std::int64_t& h) {
   if (w < 1 || h < 1 || w > tracer::kMaxResolution || h > tracer::kMaxResolution) throw InputError("--size: each side must be in [1, 8192], got " + size);
 }
 
-// The whole SDL is built before the file is opened; AtomicFile leaves no partial file.
+// The whole SDL is built before the file is opened; OutputFile leaves no partial file.
 int export_pov(const SceneCommands& c) {
   const tracer::Scene s = tracer::read_scene_file(c.file);
   tracer::PovOptions o;
@@ -60,7 +60,7 @@ int export_pov(const SceneCommands& c) {
   o.light = c.light;
   parse_size(c.size, o.width, o.height);
   const tracer::PovScene pov = tracer::export_pov(s, o);
-  AtomicFile out(c.out);
+  OutputFile out(c.out);
   out.stream() << pov.text;
   out.commit();
   for (const std::string& a : pov.approximations) std::cout << "approximated: " << a << '\n';

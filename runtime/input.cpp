@@ -48,15 +48,23 @@ Json parse_json_text(std::string_view text, std::string_view what) {
       --depth;
     }
   }
-  // The parser itself: duplicate keys are refused, not silently merged.
+  // The parser itself: duplicate keys are refused, not silently merged. An object with a duplicate
+  // ends with fewer members than keys were read (the parser keeps the last); only then are its keys
+  // sorted to name the duplicate, so the check is linear in the keys.
   std::vector<std::vector<std::string>> keys;
   auto strict = [&](int, Json::parse_event_t event, Json& parsed) {
-    if (event == Json::parse_event_t::object_start) keys.emplace_back();
-    else if (event == Json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-    else if (event == Json::parse_event_t::key && !keys.empty()) {
-      const std::string k = parsed.get<std::string>();
-      if (std::find(keys.back().begin(), keys.back().end(), k) != keys.back().end()) throw InputError(w + ": duplicate key \"" + k + "\"");
-      keys.back().push_back(k);
+    if (event == Json::parse_event_t::object_start) {
+      keys.emplace_back();
+    } else if (event == Json::parse_event_t::key && !keys.empty()) {
+      keys.back().push_back(parsed.get<std::string>());
+    } else if (event == Json::parse_event_t::object_end && !keys.empty()) {
+      std::vector<std::string>& k = keys.back();
+      if (parsed.is_object() && parsed.size() != k.size()) {
+        std::sort(k.begin(), k.end());
+        const auto dup = std::adjacent_find(k.begin(), k.end());
+        throw InputError(w + ": duplicate key \"" + one_line(dup == k.end() ? "?" : *dup, 200) + "\"");
+      }
+      keys.pop_back();
     }
     return true;
   };
@@ -87,6 +95,12 @@ bool read_line(std::istream& in, std::string& line, std::size_t max, const std::
     if (!full) return any;
     in.clear();
   }
+}
+
+void require_regular_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (st.type() != std::filesystem::file_type::regular && st.type() != std::filesystem::file_type::not_found) throw InputError(what + ": '" + one_line(path, 200) + "' is not a regular file");
 }
 
 std::ifstream open_input_file(const std::string& path, std::string_view what) {

@@ -36,6 +36,10 @@ Json read_input_arg(const std::string& arg);
 // std::getline with a bound: reads the next line (without its '\n') into `line`, false at the end.
 // A line of more than `max` bytes throws InputError naming `what`, before more of it is read.
 bool read_line(std::istream& in, std::string& line, std::size_t max, const std::string& what);
+// A file named inside data (a mesh, a texture, a scene) must be a regular file: a FIFO or a device
+// there would hang the reader. Throws InputError naming `what` if it exists and is not one (a
+// missing file is the reader's to report).
+void require_regular_file(const std::string& path, const std::string& what);
 // Opens a file to read, or throws InputError naming `what`: missing, unreadable, a directory.
 std::ifstream open_input_file(const std::string& path, std::string_view what);
 // A message as one line for a terminal: control characters escaped (\n, \t, \xNN), cut to about

@@ -8,7 +8,7 @@
 namespace sw {
 
 void write_png(const std::filesystem::path& path, const std::uint8_t* pixels, int w, int h, int channels) {
-  AtomicFile file(path);
+  OutputFile file(path);
   struct Sink {
     std::ostream* out;
   } sink{&file.stream()};

@@ -155,7 +155,7 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
     if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
     if constexpr (names_hook<Spec>(Hook::sweep_shaded)) a.sweep.shaded = Spec::sweep_shaded;
   }
-  if constexpr (names_hook<Spec>(Hook::lobe)) a.lobe = {.present = true, .shaded = true, .sample = true, .angles = true};
+  if constexpr (names_hook<Spec>(Hook::lobe)) a.lobe.present = a.lobe.shaded = a.lobe.sample = a.lobe.angles = true;
   a.outline = names_hook<Spec>(Hook::outline);
   if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
   if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;

@@ -20,7 +20,7 @@ bool ends_with(const std::string& s, std::string_view tail) {
 std::pair<int, int> check_plot_target(const std::string& path, const std::string& size) {
   if (!ends_with(path, ".png") && !ends_with(path, ".svg")) throw InputError("--plot '" + path + "': the file name must end in .png or .svg");
   const auto [w, h] = parse_frame_size(size, "--plot-size");
-  { AtomicFile trial(path); }  // throws naming the path if it cannot be written; leaves nothing
+  { OutputFile trial(path); }  // throws naming the path if it cannot be written; leaves nothing
   return {w, h};
 }
 
@@ -29,7 +29,7 @@ void write_bench_plot(const std::string& path, std::string_view alg_id, const st
   const auto [w, h] = size;
   const Chart chart = bench_chart(alg_id, rows, float(w), float(h), note);
   if (ends_with(path, ".svg")) {
-    AtomicFile file(path);
+    OutputFile file(path);
     file.stream() << chart_svg(chart);
     if (!file.stream()) throw InputError("cannot write " + path);
     file.commit();

@@ -8,7 +8,7 @@ namespace sw::vis {
 
 struct GifWriter::Impl {
   explicit Impl(const std::filesystem::path& p) : file(p), target(p) {}
-  AtomicFile file;
+  OutputFile file;
   std::filesystem::path target;
   GifFileType* gif = nullptr;
   void fail(const char* what, int err) const {
@@ -39,7 +39,7 @@ GifWriter::GifWriter(const std::filesystem::path& path, int w, int h, int delay_
 GifWriter::~GifWriter() {
   if (impl_->gif) {
     int err = 0;
-    EGifCloseFile(impl_->gif, &err);  // the AtomicFile then removes the unfinished temporary
+    EGifCloseFile(impl_->gif, &err);  // the OutputFile then removes the unfinished temporary
   }
 }
 

@@ -194,10 +194,9 @@ struct OctreeBuildSpec {
       only_keys_optional(j, {"points"}, {"capacity", "max_depth", "max_refs"}, "input");
       in.points = spatial::parse_points<3>(j["points"], "input.points");
     } else {
-      Json rest = j;
-      if (rest.is_object())
-        for (const char* k : {"capacity", "max_depth", "max_refs"}) rest.erase(k);
-      in.mesh = spatial::parse_mesh(rest, "input");
+      if (!j.is_object()) throw InputError("input: expected an object");
+      only_keys_optional(j, {}, {"triangles", "mesh", "capacity", "max_depth", "max_refs"}, "input");
+      in.mesh = spatial::parse_mesh(j, "input");
       if (in.mesh.size() == 0) throw InputError("input: the mesh has no triangles");
     }
     in.p = parse_params(j, 16, 8);

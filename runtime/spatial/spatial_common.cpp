@@ -167,6 +167,7 @@ Mesh read_mesh_file(const std::string& path) {
   const auto dot = path.rfind('.');
   const std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
   if (ext != "off" && ext != "obj") throw InputError(shown + ": expected a .off or .obj mesh file");
+  require_regular_file(path, "mesh file");
   r.in.open(path, std::ios::binary | std::ios::ate);
   ++g_mesh_files_opened;
   if (!r.in) throw InputError(shown + ": cannot read the mesh file");

@@ -23,6 +23,7 @@ std::shared_ptr<const Scene> load_scene(const Json& v, std::string* name) {
     std::filesystem::path p = v.get<std::string>();
     *name = p.string();
     if (p.is_relative()) p = std::filesystem::path(source_root()) / p;
+    require_regular_file(p.string(), "input.scene");
     return std::make_shared<const Scene>(read_scene_file(p.lexically_normal().string()));
   }
   if (!v.is_object()) throw InputError("input.scene: expected a scene file (relative to the source tree) or a scene object");
