@@ -36,8 +36,8 @@ template <class F> void write_output(const std::string& path, std::uint64_t max_
 }
 
 void add_budget_options(CLI::App* cmd, Budget& b) {
-  cmd->add_option("--max-steps", b.max_steps, "Refuse inputs that imply more steps (default 4000000)");
-  cmd->add_option("--max-output", b.max_output, "Stop and write nothing past this many bytes (default 1073741824)");
+  cmd->add_option("--max-steps", b.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
+  cmd->add_option("--max-output", b.max_output, "Stop and write nothing past this many bytes (default 1073741824)")->check(CLI::Validator(budget_count_error, "COUNT"));
 }
 
 void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool json) {
@@ -99,7 +99,7 @@ static int run_command(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "Replay a trace against the exact oracle; exit 0 agree, 1 diverge, 2 malformed");
   check->add_option("trace", trace_path, "Trace file (JSONL), or - for standard input")->required();
   check->add_flag("--decisions-only", decisions_only, "Compare lines, kinds, integers and pixels, not rounded numbers");
-  check->add_option("--max-steps", budget.max_steps, "Refuse traces whose replay implies more steps (default 4000000)");
+  check->add_option("--max-steps", budget.max_steps, "Refuse traces whose replay implies more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
 
   auto* bench = app.add_subcommand("bench", "Accuracy against time in every numeric mode, on seeded sets");
   bench->add_option("algorithm", alg_id, "Algorithm id")->required();

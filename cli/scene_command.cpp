@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <regex>
+#include "budget.hpp"
 #include "png.hpp"
 #include "output.hpp"
 #include "tracer/plan.hpp"
@@ -32,6 +33,8 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.render->add_flag("--all-effects", c.all_effects, "Simulate every effect (the planner's reference)");
   c.render->add_option("--threads", c.threads, "Threads (0: every core); the image does not depend on it")->check(CLI::Range(0u, 256u));
   c.render->add_flag("--quiet", c.quiet, "No progress bar and no summary");
+  c.render->add_option("--max-rays", c.max_rays, "Refuse a render that implies more rays (default " + std::to_string(tracer::kDefaultMaxRays) + ")")
+      ->check(CLI::Validator(budget_count_error, "COUNT"));
   c.render->add_option("--offset", c.offset, "Secondary ray origins: robust (default), none or epsilon (the naive ones, for the acne lesson)")
       ->check(CLI::IsMember({"robust", "none", "epsilon"}));
   c.export_pov->add_option("--out", c.out, "The .pov file to write")->required();
@@ -79,6 +82,7 @@ int render(const SceneCommands& c) {
     o.spp = c.spp;
   }
   o.adaptive = c.adaptive, o.all_effects = c.all_effects, o.threads = c.threads;
+  o.max_rays = c.max_rays;
   o.offset = c.offset == "none" ? tracer::Offset::none : c.offset == "epsilon" ? tracer::Offset::epsilon : tracer::Offset::robust;
   const bool bar = !c.quiet && isatty(STDERR_FILENO);
   if (bar)

@@ -3,7 +3,9 @@
 // `export-pov` writes it as POV-Ray SDL (docs/tracer/povray.md).
 #pragma once
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <string>
+#include "tracer/render.hpp"
 
 namespace sw::cli {
 
@@ -17,6 +19,7 @@ struct SceneCommands {
   std::int64_t spp = 0;
   bool adaptive = false, all_effects = false, quiet = false;
   unsigned threads = 0;
+  std::uint64_t max_rays = tracer::kDefaultMaxRays;  // render: the work budget
   std::string mode = "image";  // export-pov
   std::size_t light = 0;
 };

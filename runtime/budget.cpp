@@ -14,8 +14,16 @@ std::size_t longest_string(const Json& j) {
 }
 
 std::uint64_t step_weight(const Json& input, Numeric n) {
-  if (n != Numeric::exact && n != Numeric::filtered) return 1;  // rounded modes convert the input once
+  // Rounded modes convert the input once; exact, filtered and reference modes compute on it.
+  if (n != Numeric::exact && n != Numeric::filtered && n != Numeric::reference) return 1;
   return 1 + longest_string(input) / kDigitsPerWeight;
+}
+
+std::string budget_count_error(std::string& text) {
+  constexpr std::uint64_t kMax = std::uint64_t{1} << 62;
+  const bool digits = !text.empty() && text.size() <= 19 && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits || std::stoull(text) > kMax) return "expected a whole number from 0 to " + std::to_string(kMax) + ", got '" + one_line(text, 40) + "'";
+  return {};
 }
 
 std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors) {

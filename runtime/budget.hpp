@@ -14,13 +14,17 @@ struct Budget {
   std::uint64_t max_output = std::uint64_t{1} << 30;
 };
 
-// In exact and filtered modes a step costs more the longer the input's exact numbers: a step counts
+// In exact, filtered and reference modes a step costs more the longer the input's exact numbers: a step counts
 // 1 + (longest string) / kDigitsPerWeight against max_steps (measured on dda-grid-walk: 1.3 us a
 // step at 1 character, 5.5 us at 2000, 12 us at 4000; docs/cli.md).
 inline constexpr std::size_t kDigitsPerWeight = 400;
 std::uint64_t step_weight(const Json& input, Numeric n);
 // The longest string in an input: exact numbers are strings ("p/q", decimals).
 std::size_t longest_string(const Json& j);
+// A budget option's text (--max-steps, --max-output, --max-rays): an error message unless it is a
+// whole number in [0, 2^62] written in decimal digits (so -1 or 2^64 cannot turn a budget off);
+// empty if it is. For CLI11's Validator.
+std::string budget_count_error(std::string& text);
 // The product, or UINT64_MAX where it overflows.
 std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors);
 

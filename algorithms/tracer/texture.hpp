@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <vector>
 #include "core/vec.hpp"
@@ -71,7 +72,7 @@ struct TraceTexture {
   double scale = 1;
   std::array<Vec3<double>, 2> colours{};
   Noise noise;
-  std::vector<Vec3<double>> texels;  // image: row 0 at the top
+  std::shared_ptr<const std::vector<std::uint8_t>> rgb;  // image: 8-bit RGB, row 0 at the top (shared by every use of one file)
   std::int64_t width = 0, height = 0;
 };
 
@@ -88,7 +89,8 @@ inline Vec3<double> texture_colour(const TraceTexture& t, double u, double v, co
       const double fu = u - std::floor(u), fv = v - std::floor(v);  // repeats; v up, row 0 at the top
       const auto x = std::min<std::int64_t>(t.width - 1, static_cast<std::int64_t>(fu * double(t.width)));
       const auto y = std::min<std::int64_t>(t.height - 1, static_cast<std::int64_t>((1 - fv) * double(t.height)));
-      return t.texels[static_cast<std::size_t>(y * t.width + x)];
+      const std::uint8_t* c = t.rgb->data() + 3 * static_cast<std::size_t>(y * t.width + x);
+      return {c[0] / 255.0, c[1] / 255.0, c[2] / 255.0};
     }
     case TextureKind::marble: {
       const Vec3<double> q = t.scale * p;

@@ -106,6 +106,7 @@ Decision caustics_decision(const Scene& s) {
 Plan plan_scene(const Scene& s) {
   Plan p;
   p.effects = EffectPlan::all(s.lights.size(), s.materials.size());
+  p.effects.zero_weight = false;  // a ray of weight 0 adds nothing: only --all-effects casts it
   Q extent = 0;  // the largest coordinate of the geometry and the lights' positions
   std::vector<std::optional<Proxy>> px;
   if (s.objects.size() <= kPlannerMaxObjects) {

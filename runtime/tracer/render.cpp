@@ -2,10 +2,12 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include "budget.hpp"
 #include "lighting/shade_input.hpp"
 #include "png.hpp"
 #include "tracer/parallel.hpp"
@@ -17,16 +19,19 @@ namespace {
 
 Vec3<double> d3(const Real3& r) { return {r.d[0], r.d[1], r.d[2]}; }
 
-TraceTexture convert_texture(const Texture& t) {
+// An image file is decoded once, however many textures name it.
+TraceTexture convert_texture(const Texture& t, std::map<std::string, TraceTexture>& decoded) {
   TraceTexture o;
   o.kind = t.kind, o.scale = t.scale.d, o.noise = Noise(t.seed);
   o.colours = {d3(t.colours[0]), d3(t.colours[1])};
   if (t.kind == TextureKind::image) {
-    const PngImage img = read_png_rgb(t.path);
-    o.width = img.width, o.height = img.height;
-    o.texels.resize(img.rgb.size() / 3);
-    for (std::size_t i = 0; i < o.texels.size(); ++i)
-      o.texels[i] = {img.rgb[3 * i] / 255.0, img.rgb[3 * i + 1] / 255.0, img.rgb[3 * i + 2] / 255.0};
+    auto [it, fresh] = decoded.try_emplace(t.path);
+    if (fresh) {
+      PngImage img = read_png_rgb(t.path);
+      it->second.width = img.width, it->second.height = img.height;
+      it->second.rgb = std::make_shared<const std::vector<std::uint8_t>>(std::move(img.rgb));
+    }
+    o.width = it->second.width, o.height = it->second.height, o.rgb = it->second.rgb;
   }
   return o;
 }
@@ -63,7 +68,8 @@ TraceScene<double> trace_scene(const Scene& s, std::int64_t width, std::int64_t 
     }
     t.objects.push_back(p);
   }
-  for (const Texture& x : s.textures) t.textures.push_back(convert_texture(x));
+  std::map<std::string, TraceTexture> decoded;
+  for (const Texture& x : s.textures) t.textures.push_back(convert_texture(x, decoded));
   lighting::ShadeScene<Rational> lights;  // the lighting family's conversion of lights and materials
   lights.lights = s.lights;
   for (const Material& m : s.materials) {
@@ -99,12 +105,36 @@ struct Sampler {
 
 }  // namespace
 
+std::uint64_t render_cost(const Scene& s, const Plan& plan, const RenderOptions& opt) {
+  const EffectPlan& e = plan.effects;
+  const auto any = [](const std::vector<char>& v) { return std::any_of(v.begin(), v.end(), [](char c) { return c != 0; }); };
+  const bool mirrors = any(e.reflection), glass = any(e.refraction);
+  const std::uint64_t depth = std::uint64_t(std::max<std::int64_t>(s.max_depth, 1));
+  const std::uint64_t tree = mirrors && glass ? (depth >= 63 ? UINT64_MAX : (std::uint64_t{1} << depth) - 1) : mirrors || glass ? depth : 1;
+  const bool adaptive = opt.adaptive || (opt.spp == 0 && s.sampling.kind == SamplingKind::adaptive);
+  const std::uint64_t max_n = std::uint64_t(s.sampling.kind == SamplingKind::adaptive ? s.sampling.n : 4);
+  const std::uint64_t samples = opt.spp > 0 ? std::uint64_t(opt.spp) : adaptive ? 1 + max_n * max_n : std::uint64_t(s.sampling.samples());
+  std::uint64_t per_pixel = std::min(saturating_product({samples, tree}), std::uint64_t(s.rays_per_pixel));
+  if (e.zero_weight) per_pixel *= 2;
+  const std::uint64_t shadows = std::uint64_t(std::count(e.shadows.begin(), e.shadows.end(), char(1)));
+  const std::uint64_t gathers = e.caustics && s.photons.count > 0 ? std::uint64_t(s.photons.gather + 63) / 64 : 0;
+  const std::uint64_t w = std::uint64_t(opt.width > 0 ? opt.width : s.camera.width), h = std::uint64_t(opt.height > 0 ? opt.height : s.camera.height);
+  const std::uint64_t tracing = saturating_product({w, h, per_pixel, 1 + shadows + gathers});
+  const std::uint64_t photons = e.caustics ? saturating_product({std::uint64_t(s.photons.count), depth}) : 0;
+  return tracing > UINT64_MAX - photons ? UINT64_MAX : tracing + photons;
+}
+
 RenderResult render(const Scene& s, const RenderOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   RenderResult out;
   out.width = opt.width > 0 ? opt.width : s.camera.width;
   out.height = opt.height > 0 ? opt.height : s.camera.height;
+  if (out.width * out.height > kMaxPixels)
+    throw InputError(std::to_string(out.width) + "x" + std::to_string(out.height) + " pixels, more than the bound 2^24 (4096x4096)");
   out.plan = opt.all_effects ? all_effects_plan(s) : plan_scene(s);
+  if (const std::uint64_t cost = render_cost(s, out.plan, opt); cost > opt.max_rays)
+    throw InputError("this render implies up to " + std::to_string(cost) + " rays, more than the budget of " + std::to_string(opt.max_rays) +
+                     " (--max-rays raises it)");
   TraceScene<double> ts = trace_scene(s, out.width, out.height);
   ts.offset = opt.offset;
   const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());

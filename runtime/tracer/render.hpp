@@ -13,6 +13,10 @@
 
 namespace sw::tracer {
 
+// The work budget of a render (docs/tracer/renderer.md#the-work-budget), in rays: 2^26, measured
+// so that the largest render the default accepts takes about 10 s on this project's 2-core machine.
+inline constexpr std::uint64_t kDefaultMaxRays = std::uint64_t{1} << 26;
+
 struct RenderOptions {
   std::int64_t width = 0, height = 0;  // 0: the scene's resolution
   std::int64_t spp = 0;                // > 0: spp samples a pixel on a sqrt(spp)^2 grid (regular, or the scene's jitter)
@@ -21,6 +25,7 @@ struct RenderOptions {
   unsigned threads = 0;                // 0: every core
   Offset offset = Offset::robust;      // naive offsets, for the lessons on acne
   std::function<void(double)> progress;  // called with the fraction done, from the calling thread
+  std::uint64_t max_rays = kDefaultMaxRays;  // render() refuses a scene whose render_cost exceeds it
 };
 
 struct RenderResult {
@@ -35,6 +40,17 @@ struct RenderResult {
 };
 
 TraceScene<double> trace_scene(const Scene& s, std::int64_t width, std::int64_t height);
+
+// An upper bound on a render's work in rays, before any is cast: per pixel its primary samples and
+// the secondary rays the plan allows under each (a chain of max_depth where only mirrors or only
+// glass are on, a binary tree where both are), within the pixel's rays_per_pixel (twice that for
+// --all-effects, whose rays of weight 0 have an allowance of their own); at each of them a shadow
+// ray per light whose shadows are on, and a photon gather counted as gather / 64 rays where
+// caustics are on; and each photon's path of at most max_depth rays.
+std::uint64_t render_cost(const Scene& s, const Plan& plan, const RenderOptions& opt);
+
+// Throws InputError naming the estimate and --max-rays when render_cost exceeds opt.max_rays, or
+// when the image has more than kMaxPixels pixels.
 RenderResult render(const Scene& s, const RenderOptions& opt);
 
 // Colours clamped to [0, 1] and rounded to 8 bits, RGB rows.

@@ -28,7 +28,12 @@ inline constexpr std::size_t kMaxLights = 8;  // the lighting family's `shade` b
 inline constexpr std::int64_t kMaxResolution = 8192, kMaxDepth = 16, kMaxSamplesPerAxis = 16;
 inline constexpr std::int64_t kMaxRaysPerPixel = std::int64_t{1} << 20;
 inline constexpr std::int64_t kMaxImageSide = 16384;  // a PNG texture's width and height
-inline constexpr std::int64_t kMaxPhotons = std::int64_t{1} << 22;
+// A PNG texture's texels: 48 MB as 8-bit RGB, decoded once per render.
+inline constexpr std::int64_t kMaxImageTexels = std::int64_t{1} << 24;
+// Photons emitted: the map of 2^20 costs about 3 s and 520 MB on one core (glass-spheres, measured).
+inline constexpr std::int64_t kMaxPhotons = std::int64_t{1} << 20;
+// A rendered image's pixels (each side at most kMaxResolution): 450 MB of colours at the bound.
+inline constexpr std::int64_t kMaxPixels = std::int64_t{1} << 24;
 
 // A number as written (exact) and its nearest double.
 struct Real {

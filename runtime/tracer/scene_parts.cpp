@@ -97,6 +97,8 @@ void read_png_size(Texture& t, const std::string& what) {
   t.image_width = be32(16), t.image_height = be32(20);
   if (t.image_width < 1 || t.image_height < 1 || t.image_width > kMaxImageSide || t.image_height > kMaxImageSide)
     throw InputError(what + ": the image is " + std::to_string(t.image_width) + "x" + std::to_string(t.image_height) + ", sides must be in [1, 16384]");
+  if (t.image_width * t.image_height > kMaxImageTexels)
+    throw InputError(what + ": the image is " + std::to_string(t.image_width) + "x" + std::to_string(t.image_height) + ", more than 2^24 texels (4096x4096)");
 }
 
 Texture parse_texture(const Json& j, const std::string& what, const SceneOptions& opt) {
