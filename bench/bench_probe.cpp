@@ -5,7 +5,9 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include "catalog.hpp"
+#include "trace_io.hpp"
 #include "core/jsonl_probe.hpp"
 #include "core/probe.hpp"
 #include "lines/bresenham_line.hpp"
@@ -162,3 +164,20 @@ static void BM_catalog_record_1M_steps(benchmark::State& state) {
   state.counters["ns_per_step"] = benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_catalog_record_1M_steps)->Unit(benchmark::kMillisecond);
+
+// `stepwise check` of a double dda-line trace of ~10^5 steps: µs per step (the goal is 10 or less).
+static void BM_check_dda_double(benchmark::State& state) {
+  const sw::Run run = sw::find_algorithm("dda-line").open(sw::Json::parse(R"({"p0":[0.25,0.5],"p1":[49999.75,12345.5]})"), sw::Numeric::f64);
+  std::stringstream trace;
+  sw::write_trace(run, trace);
+  const std::string text = trace.str();
+  std::size_t steps = 0;
+  for (auto _ : state) {
+    std::istringstream in(text);
+    const sw::CheckReport rep = sw::check_trace(in, false);
+    if (rep.status != 0) state.SkipWithError(rep.message.c_str());
+    steps += rep.steps;
+  }
+  state.counters["us_per_step"] = benchmark::Counter(static_cast<double>(steps) * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_check_dda_double)->Unit(benchmark::kMillisecond);

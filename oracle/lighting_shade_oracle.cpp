@@ -99,7 +99,7 @@ ShadeResult shade_gl(const ShadeCase& c) {
       }
     }
     F diff(Rational(0)), spec(Rational(0));
-    if (r.lit) {
+    if (r.lit && !L.blocked) {
       diff = fdot(n, l);
       if (diff.sign() < 0) diff = F(Rational(0));
       std::array<F, 3> h{l[0] + e[0], l[1] + e[1], l[2] + e[2]};

@@ -22,6 +22,7 @@ struct ShadeLight {
   Rational cutoff{180}, exponent{0};
   Rational k0{1}, k1{0}, k2{0};
   Rgb ambient, diffuse, specular;
+  bool blocked = false;  // a ray tracer's shadow ray found it occluded: its ambient term only
 };
 
 struct ShadeCase {
@@ -33,7 +34,7 @@ struct ShadeCase {
 };
 
 struct ShadeLightResult {
-  bool at_point = false, lit = false, inside = true;
+  bool at_point = false, lit = false, inside = true;  // lit: n.l > 0 (an occluded light may be lit and add no diffuse)
   Rational attenuation, spot, diffuse, specular;  // rounded from kShadeOracleBits
   Rgb rgb;
 };

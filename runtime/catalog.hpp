@@ -51,7 +51,7 @@ struct Algorithm;
 // need the Spec's types.
 struct SpecFunctions {
   std::shared_ptr<const OpenInput> (*open)(const Algorithm&, const Json&);
-  Json (*canonical)(const Json& result);
+  Json (*canonical)(Json result);
   std::vector<BenchRow> (*bench)(Numeric, int repeats, const std::string& only_set);
   std::vector<std::string> (*bench_sets)();
   std::size_t (*step_cost)(Numeric);
@@ -83,7 +83,7 @@ struct Algorithm {
   Numeric replay_mode() const;
 
   // A result in the form the oracle states it (sorted, for results the oracle gives as a set).
-  Json canonical(const Json& result) const { return fn.canonical(result); }
+  Json canonical(Json result) const { return fn.canonical(std::move(result)); }
   // Times the untraced algorithm on its seeded bench sets (or only_set, if not empty), against
   // the exact mode.
   std::vector<BenchRow> bench(Numeric n, int repeats, const std::string& only_set) const { return fn.bench(n, repeats, only_set); }

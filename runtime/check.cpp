@@ -1,9 +1,12 @@
 // `stepwise check`: replays a trace in exact (or reference) mode and compares it step by step and
 // field by field, then its result with the oracle. Format and rules: docs/trace-format.md.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <optional>
+#include <string_view>
 #include "trace_io.hpp"
 
 namespace sw {
@@ -15,8 +18,53 @@ namespace {
 struct Tolerance {
   Rational rel;         // 0: exactly
   bool numbers = true;  // false: --decisions-only, numbers are not compared
+  double rel_d = rel.get_d();  // rel as a double (a power of 2), for the filter in value_diff
 };
 
+// A number's value as a double with a bound on its relative error, when it is cheap to get: a JSON
+// number (exact), or a "p/q" / decimal string. Parts that read as finite doubles are rounded once
+// each; longer parts (a reference value's thousands of digits) are read from their first 18
+// digits and their length, so that a rounded trace is compared without exact arithmetic.
+struct Approx {
+  double value, rel;
+};
+// A run of digits as lead * 10^exp, lead its first 18 digits (exact in a long double).
+struct Digits {
+  long double lead;
+  std::ptrdiff_t exp;
+};
+std::optional<Digits> approx_part(std::string_view s) {
+  if (s.empty() || s.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+  constexpr std::size_t kLead = 18;
+  const std::size_t n = std::min(s.size(), kLead);
+  return Digits{std::strtold(std::string(s.substr(0, n)).c_str(), nullptr), static_cast<std::ptrdiff_t>(s.size() - n)};
+}
+std::optional<Approx> approx(const Json& v) {
+  if (v.is_number()) return Approx{v.get<double>(), 0};
+  if (!v.is_string()) return std::nullopt;
+  const std::string& s = v.get_ref<const std::string&>();
+  if (s.find_first_not_of("0123456789+-./") != std::string::npos) return std::nullopt;  // parse_rational's syntax decides
+  const std::size_t slash = s.find('/');
+  if (slash == std::string::npos && s.find('.') != std::string::npos) {  // a decimal: short ones only
+    if (s.size() > 40) return std::nullopt;
+    char* end = nullptr;
+    const double d = std::strtod(s.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(d)) return std::nullopt;
+    return Approx{d, 0x1p-52};
+  }
+  const bool negative = !s.empty() && s[0] == '-';
+  const std::size_t start = !s.empty() && (s[0] == '-' || s[0] == '+');
+  const auto p = approx_part(std::string_view(s).substr(start, slash == std::string::npos ? std::string::npos : slash - start));
+  const auto q = slash == std::string::npos ? std::optional<Digits>(Digits{1, 0}) : approx_part(std::string_view(s).substr(slash + 1));
+  if (!p || !q || q->lead == 0) return std::nullopt;
+  const std::ptrdiff_t e = p->exp - q->exp;
+  if (e > 400 || e < -400) return std::nullopt;
+  const double d = static_cast<double>(p->lead / q->lead * std::pow(10.0L, static_cast<long double>(e)));
+  if (!std::isfinite(d)) return std::nullopt;
+  // Each part within 10^-17 of its value (18 digits kept), the long double steps within 2^-62, one
+  // rounding to double: together below 2^-51.
+  return Approx{negative ? -d : d, 0x1p-51};
+}
 // Nesting depth of a JSON value, without recursion: readers and printers below recurse at most
 // this deep, so a trace nested 10^5 levels is refused before anything recurses into it.
 constexpr std::size_t kMaxNesting = 64;
@@ -41,7 +89,7 @@ std::string show(const Json& v) {
   std::string text = v.is_string() ? v.get<std::string>() : v.dump();
   if (text.size() > 80) text = text.substr(0, 77) + "...";
   try {
-    const Rational q = parse_rational(v, "");
+    const Rational q = parse_rational(v, "", kMaxExactTextChars);
     if (q.get_den() != 1 || v.is_string()) {
       char buf[40];
       std::snprintf(buf, sizeof buf, "%.9g", q.get_d());
@@ -60,9 +108,19 @@ std::optional<std::string> value_diff(const Json& want, const Json& got, const T
   const bool wn = want.is_number() || want.is_string(), gn = got.is_number() || got.is_string();
   if (wn && gn) {
     if (!exact && !tol.numbers && !want.is_number_integer()) return std::nullopt;  // --decisions-only
+    // A filter, as for the algorithms' own decisions: where the difference of the double values is
+    // surely within the tolerance (their rounding, at most 2^-51 relative each, counted against it),
+    // the exact comparison is not needed. Rounded traces are mostly decided here.
+    if (!exact && !want.is_number_integer() && tol.rel_d >= 0x1p-40) {
+      const auto w = approx(want), g = approx(got);
+      if (w && g && std::isfinite(w->value) && std::isfinite(g->value)) {
+        const double err = (w->rel + 0x1p-52) * std::fabs(w->value) + (g->rel + 0x1p-52) * std::fabs(g->value);
+        if (std::fabs(g->value - w->value) + err <= tol.rel_d * (1 + std::fabs(w->value)) * (1 - 0x1p-50)) return std::nullopt;
+      }
+    }
     Rational w, g;
     try {
-      w = parse_rational(want, path), g = parse_rational(got, path);
+      w = parse_rational(want, path, kMaxExactTextChars), g = parse_rational(got, path, kMaxExactTextChars);
     } catch (const InputError&) {
       return want == got ? std::nullopt : differ("expected " + show(want) + ", got " + show(got));
     }
@@ -139,10 +197,17 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
   const std::string want_in = want.value("in", ""), got_in = got.contains("in") && got["in"].is_string() ? got["in"].get<std::string>() : "";
   if (want_in != got_in)
     return "listing: expected a step of " + (want_in.empty() ? std::string("the algorithm itself") : want_in) + ", got one of " + (got_in.empty() ? std::string("the algorithm itself") : got_in);
-  const Listing& lst = want_in.empty() ? listing : find_algorithm(want_in).listing;
+  // A callee's listing, for naming lines: a catalog algorithm's, or none for an inner scope of
+  // one (the tracer's scene-hit), whose lines are then shown by number.
+  const Listing* lst = &listing;
+  if (!want_in.empty()) {
+    const auto& all = catalog();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const Algorithm& a) { return a.id == want_in; });
+    lst = it == all.end() ? nullptr : &it->listing;
+  }
   auto line_name = [&](const Json& l) {
     const auto id = l.get<std::int64_t>();
-    return l.dump() + (id >= 1 && id <= static_cast<std::int64_t>(lst.lines.size()) ? " (" + std::string(lst.lines[id - 1].name) + ")" : "");
+    return l.dump() + (lst && id >= 1 && id <= static_cast<std::int64_t>(lst->lines.size()) ? " (" + std::string(lst->lines[id - 1].name) + ")" : "");
   };
   if (got.at("line") != want.at("line")) return "line: expected " + line_name(want.at("line")) + ", got " + line_name(got.at("line"));
   if (got.at("kind") != want.at("kind")) return "kind: expected " + want.at("kind").dump() + ", got " + got.at("kind").dump();
@@ -197,7 +262,7 @@ void require_step_shape(const Json& j, std::size_t lineno) {
     for (auto it = item.begin(); it != item.end(); ++it) {
       if (!is_modifier(it.key())) ++kinds;
       else if (it.key() == "value") {
-        if (!(it->is_string() && is_nonfinite_text(it->get<std::string>()))) (void)parse_rational(*it, "line " + std::to_string(lineno) + ": geometry value");
+        if (!(it->is_string() && is_nonfinite_text(it->get<std::string>()))) (void)parse_rational(*it, "line " + std::to_string(lineno) + ": geometry value", kMaxExactTextChars);
       }
       else if (!it->is_string() || (it.key() == "life" && !parse_life(it->get<std::string>()))) bad("a geometry label or life that is not one of its strings");
     }
@@ -207,7 +272,7 @@ void require_step_shape(const Json& j, std::size_t lineno) {
   // of 2 or 3), or a colour {"rgb": [r, g, b]}.
   auto number = [&](const Json& v, const std::string& what) {
     if (!v.is_number() && !v.is_string()) bad("a variable that is neither a number, a \"p/q\" string nor a vector of them");
-    if (v.is_string() && !is_nonfinite_text(v.get<std::string>())) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what);
+    if (v.is_string() && !is_nonfinite_text(v.get<std::string>())) (void)parse_rational(v, "line " + std::to_string(lineno) + ": " + what, kMaxExactTextChars);
   };
   for (auto it = j["vars"].begin(); it != j["vars"].end(); ++it) {
     const Json* list = &*it;
@@ -283,8 +348,12 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     // it is made, so memory stays flat however long the trace.
     std::size_t i = 0;
     std::optional<Json> pending;  // a trace line read but not yet matched
+    std::optional<std::string> replay_result;  // the replay's result line
     LineSink sink([&](const std::string& text) {
-      if (text.rfind("{\"result\"", 0) == 0) return;  // the oracle judges the result
+      if (text.rfind("{\"result\"", 0) == 0) {  // the oracle judges the result
+        if (rounded) replay_result = text;
+        return;
+      }
       if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
       if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
         ++i;
@@ -296,6 +365,8 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
       const std::string where = "step " + std::to_string(i);
       if (is_result(*pending)) throw diverged(where, "the trace ends its steps here; the algorithm has more");
       require_step_shape(*pending, lineno);
+      if (pending->contains("step") && (*pending)["step"] != Json(i))
+        throw diverged(where, "step: expected " + std::to_string(i) + ", got " + show((*pending)["step"]) + " (steps are numbered from 0, in order)");
       if (auto d = step_diff(want, *pending, tol, alg.listing)) throw diverged(where, *d);
       pending.reset();
       ++i;
@@ -312,8 +383,23 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     }
     if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
     if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
-    const Json oracle = run.oracle();
-    if (auto d = value_diff(alg.canonical(oracle), alg.canonical((*last)["result"]), tol, false, "result")) throw diverged("result", *d);
+    Json oracle = run.oracle();
+    // A reference run's result holds doubles rounded from its 300-bit values, and the oracle's from
+    // 400 bits: one rounding each, so they are held within 2^-52 (docs/trace-format.md).
+    Tolerance result_tol = tol;
+    if (mode == Numeric::reference) result_tol.rel = std::max(tol.rel, Rational(1, mpz_class(1) << 52)), result_tol.rel_d = result_tol.rel.get_d();
+    // Results are moved, not copied: a long line's result holds every pixel.
+    Json got = std::move((*last)["result"]);
+    const Json want = alg.canonical(std::move(oracle));
+    auto d = value_diff(want, alg.canonical(rounded ? Json(got) : std::move(got)), result_tol, false, "result");
+    // A rounded result can differ from the oracle's canonical form only because its rounding leaves
+    // a shape the canonical form reduces otherwise (a clipped vertex 10^-16 off its edge). It is
+    // right when it matches the exact replay's own result within the tolerance, and the replay the oracle.
+    if (d && rounded && replay_mode == Numeric::exact && replay_result) {
+      const Json exact = Json::parse(*replay_result)["result"];
+      if (!value_diff(want, alg.canonical(exact), Tolerance{Rational(0)}, true, "result") && !value_diff(exact, got, result_tol, false, "result")) d.reset();
+    }
+    if (d) throw diverged("result", *d);
     rep.steps = i;
     rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::reference ? "reference" : replay_mode == Numeric::f64 ? "double replay and its oracle" : "exact oracle") +
                   (tol.rel > 0 && tol.numbers ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))" : "");

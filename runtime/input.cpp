@@ -49,10 +49,22 @@ Json parse_json_text(std::string_view text, std::string_view what) {
     }
   }
   // The parser itself: duplicate keys are refused, not silently merged. An object with a duplicate
-  // ends with fewer members than keys were read (the parser keeps the last); only then are its keys
-  // sorted to name the duplicate, so the check is linear in the keys.
+  // ends with fewer members than keys were read (the parser keeps the last): keys are only counted,
+  // and only then is the text read again with its keys kept and sorted to name the duplicate. So
+  // the check is linear in the keys and allocates nothing (check parses every trace line).
+  struct Duplicate {};
+  std::vector<std::size_t> counts;
+  auto counted = [&](int, Json::parse_event_t event, Json& parsed) {
+    if (event == Json::parse_event_t::object_start) counts.push_back(0);
+    else if (event == Json::parse_event_t::key && !counts.empty()) ++counts.back();
+    else if (event == Json::parse_event_t::object_end && !counts.empty()) {
+      if (parsed.is_object() && parsed.size() != counts.back()) throw Duplicate{};
+      counts.pop_back();
+    }
+    return true;
+  };
   std::vector<std::vector<std::string>> keys;
-  auto strict = [&](int, Json::parse_event_t event, Json& parsed) {
+  auto named = [&](int, Json::parse_event_t event, Json& parsed) {
     if (event == Json::parse_event_t::object_start) {
       keys.emplace_back();
     } else if (event == Json::parse_event_t::key && !keys.empty()) {
@@ -67,6 +79,15 @@ Json parse_json_text(std::string_view text, std::string_view what) {
       keys.pop_back();
     }
     return true;
+  };
+  auto strict = [&](int depth, Json::parse_event_t event, Json& parsed) -> bool {
+    try {
+      return counted(depth, event, parsed);
+    } catch (const Duplicate&) {
+      const Json again = Json::parse(text.begin(), text.end(), named);
+      (void)again;
+      throw InputError(w + ": duplicate key");  // not reached: the second reading names it
+    }
   };
   try {
     return Json::parse(text.begin(), text.end(), strict);
@@ -145,9 +166,12 @@ std::string one_line(std::string_view message, std::size_t max) {
   return out;
 }
 
-static Rational parse_decimal_or_fraction(const std::string& s, const std::string& what) {
+static Rational parse_decimal_or_fraction(const std::string& s, const std::string& what, std::size_t max_chars) {
   auto bad = [&] { return InputError(what + ": '" + one_line(s, 60) + "' is not a number or an exact \"p/q\""); };
-  if (s.empty() || s.size() > 4096) throw bad();
+  if (s.size() > max_chars)
+    throw InputError(what + ": an exact number of " + std::to_string(s.size()) + " characters, more than the " + std::to_string(max_chars) +
+                     (max_chars == kMaxInputNumberChars ? " an input's numbers may have" : " a trace's numbers may have"));
+  if (s.empty()) throw bad();
   const auto slash = s.find('/');
   auto digits_ok = [](std::string_view t, bool allow_point) {
     std::size_t i = (!t.empty() && (t[0] == '-' || t[0] == '+')) ? 1 : 0;
@@ -182,7 +206,7 @@ static Rational parse_decimal_or_fraction(const std::string& s, const std::strin
   return r;
 }
 
-Rational parse_rational(const Json& v, const std::string& what) {
+Rational parse_rational(const Json& v, const std::string& what, std::size_t max_chars) {
   if (v.is_number_integer()) return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>()), 10)) : Rational(mpz_class(std::to_string(v.get<std::int64_t>()), 10));
   if (v.is_number_float()) {
     const double d = v.get<double>();
@@ -193,7 +217,7 @@ Rational parse_rational(const Json& v, const std::string& what) {
     const std::string s = v.get<std::string>();
     if (s == "nan" || s == "NaN" || s == "inf" || s == "-inf" || s == "Infinity" || s == "-Infinity")
       throw InputError(what + ": not a finite number");
-    return parse_decimal_or_fraction(s, what);
+    return parse_decimal_or_fraction(s, what, max_chars);
   }
   throw InputError(what + ": expected a number, got " + std::string(v.type_name()));
 }

@@ -45,8 +45,13 @@ std::ifstream open_input_file(const std::string& path, std::string_view what);
 // A message as one line for a terminal: control characters escaped (\n, \t, \xNN), cut to about
 // `max` bytes with "..." (echoed input may be a megabyte long; echo points cut it shorter).
 std::string one_line(std::string_view message, std::size_t max = 1000);
-// A number (finite) or a string "n", "p/q" or a decimal like "-1.25"; `what` names it in errors.
-Rational parse_rational(const Json& v, const std::string& what);
+// Exact numbers as strings ("p/q", "-1.25"): at most kMaxInputNumberChars characters in an input;
+// in a trace (the values a run records) at most kMaxExactTextChars (core/number.hpp): `trace`
+// refuses to write a longer one and `check` reads up to it (docs/trace-format.md).
+inline constexpr std::size_t kMaxInputNumberChars = 4096;
+// A number (finite) or a string "n", "p/q" or a decimal like "-1.25" of at most max_chars
+// characters; `what` names it in errors.
+Rational parse_rational(const Json& v, const std::string& what, std::size_t max_chars = kMaxInputNumberChars);
 // obj is an object with exactly these fields: throws "unknown field" or "missing field".
 void only_keys(const Json& obj, std::initializer_list<const char*> keys, const std::string& what);
 // The same, where the `optional` fields may also appear.

@@ -67,7 +67,8 @@ template <class Spec> auto preparer(const typename Spec::Input& in) {
 
 // Computes the output for mode n. `visit(type_identity<Num>, compute)` makes a probe, calls
 // compute(probe) and does what it likes with the probe afterwards. Filtered mode decides first on
-// the filter stages, untraced, and traces the first stage that is certain, or exact rationals.
+// the filter stages and traces the first stage that is certain in its decisions and its recorded
+// numbers, or exact rationals.
 template <class Spec, class Visit>
 auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool* fell_back) {
   auto go = [&](auto t) {
@@ -81,8 +82,11 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
       std::size_t stage = 0;
       (void)first_certain_stage<Spec>(preparer<Spec>(in), 0, [&]<class S>(const auto& prepared, std::size_t k) {
         if constexpr (!std::is_same_v<S, Rational>) {
-          NoProbe none;
-          (void)Spec::template compute<S>(prepared, none);  // undecided: the next stage
+          // Undecided, or a recorded number not certified to kFilteredTraceRel: the next stage.
+          Recorder<S> rec;
+          (void)Spec::template compute<S>(prepared, rec);
+          for (const S& x : rec.numbers())
+            if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
         }
         stage = k;
         return 0;

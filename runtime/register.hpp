@@ -160,8 +160,8 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
   if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
   if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;
   a.fn.open = [](const Algorithm& alg, const Json& j) -> std::shared_ptr<const OpenInput> { return std::make_shared<const OpenSpec<Spec>>(alg, j); };
-  a.fn.canonical = [](const Json& r) -> Json {
-    if constexpr (names_hook<Spec>(Hook::canonical)) return Spec::canonical(r);
+  a.fn.canonical = [](Json r) -> Json {
+    if constexpr (names_hook<Spec>(Hook::canonical)) return Spec::canonical(std::move(r));
     else return r;
   };
   a.fn.bench = &bench_spec<Spec>;

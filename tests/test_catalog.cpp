@@ -7,26 +7,12 @@
 #include <set>
 #include "catalog.hpp"
 #include "cli_harness.hpp"
+#include "corpus.hpp"
 #include "trace_io.hpp"
 
 using namespace sw;
 
 namespace {
-
-// The inputs of a family's corpus files (tests/cases/<family>/*.jsonl, "input" members).
-std::vector<Json> corpus(std::string_view family) {
-  std::vector<Json> out;
-  const auto dir = std::filesystem::path(SW_SOURCE_DIR) / "tests" / "cases" / std::string(family);
-  if (!std::filesystem::exists(dir)) return out;
-  for (const auto& f : std::filesystem::directory_iterator(dir)) {
-    if (f.path().extension() != ".jsonl" || f.path().filename().string().rfind("bad", 0) == 0) continue;
-    std::ifstream in(f.path());
-    std::string line;
-    while (std::getline(in, line))
-      if (!line.empty() && line[0] == '{') out.push_back(Json::parse(line).at("input"));
-  }
-  return out;
-}
 
 // A loop header ("while ...:", "for ...:", "repeat ...:") has no step of its own: its test shows on
 // the steps inside the loop. Recognised by the code ending in ':' (before any "--" comment).
@@ -60,7 +46,7 @@ TEST_CASE("catalog: every listing line is reached by a step of the examples and 
     INFO(alg.id);
     const Numeric n = alg.supports(Numeric::exact) ? Numeric::exact : Numeric::f64;
     std::set<std::uint32_t> reached;
-    std::vector<Json> inputs = corpus(alg.family);
+    std::vector<Json> inputs = testing::corpus(alg.family);
     inputs.push_back(Json::parse(alg.example));
     std::size_t ran = 0;
     for (const Json& in : inputs) {

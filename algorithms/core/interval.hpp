@@ -1,7 +1,7 @@
 // Filtered arithmetic: a double interval that surely contains the exact value. Every decision
 // (comparison, floor) is either certain or throws Uncertain; the caller then re-runs the case on
 // the next stage, in the end exact rationals (run_filter_stage here, the chain in
-// runtime/adapter.hpp). Same idea as CGAL's filtered predicates.
+// runtime/modes.hpp). Same idea as CGAL's filtered predicates.
 //
 // Included by number.hpp after its declarations; include number.hpp, not this file.
 #pragma once
@@ -114,6 +114,8 @@ inline std::int64_t floor_int(const Interval& x) {
   return static_cast<std::int64_t>(a);
 }
 inline double to_double(const Interval& x) { return x.mid(); }
+// The midpoint is within rel (1 + |midpoint|) of the exact value, which the interval holds.
+inline bool certified(const Interval& x, double rel) { return 0.5 * (x.hi() - x.lo()) <= rel * (1 + std::fabs(x.mid())); }
 // Filtered traces record the midpoint; the decisions made from the interval are certified.
 inline std::string to_text(const Interval& x) { return to_text(x.mid()); }
 template <> inline Interval from_rational<Interval>(const Rational& q) {

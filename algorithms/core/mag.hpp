@@ -235,6 +235,10 @@ template <bool C> inline std::int64_t floor_int(const BasicMag<C>& x) {
   return static_cast<std::int64_t>(std::floor(v));
 }
 template <bool C> [[gnu::always_inline]] inline double to_double(const BasicMag<C>& x) { return x.value(); }
+// The value is within kC m of the exact value (an index within the budget, as for decisions).
+template <bool C> inline bool certified(const BasicMag<C>& x, double rel) {
+  return BasicMag<C>::kC * x.magnitude() <= rel * (1 + std::fabs(x.value()));
+}
 // One decision instead of the generic two comparisons.
 template <bool C> [[gnu::always_inline]] inline int sign(const BasicMag<C>& x) { return BasicMag<C>::sign_of(x); }
 template <bool C> [[gnu::always_inline]] inline BasicMag<C> select(bool c, const BasicMag<C>& a, const BasicMag<C>& b) { return BasicMag<C>::blend(c, a, b); }

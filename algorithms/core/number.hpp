@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -175,9 +176,22 @@ template <class T> constexpr bool is_filtered = NumericOf<T>::value == Numeric::
 // Lossless JSON text for a value: strings for rationals, numbers otherwise, and the strings "NaN",
 // "Infinity" and "-Infinity" for the non-finite values (JSON has no token for them;
 // docs/trace-format.md).
+// An exact number's text in a trace is at most this long (1 MiB; docs/trace-format.md): a run that
+// records a longer one throws std::length_error (the command's one-line error), so `check`, which
+// reads up to it, reads every trace `trace` writes.
+inline constexpr std::size_t kMaxExactTextChars = std::size_t{1} << 20;
+// A filtered trace's numbers are within this of their exact values, relative to 1 + |value|
+// (half of `check`'s tolerance for filtered traces): a stage whose decisions are certain but whose
+// recorded numbers are not certified this closely is not traced; the next stage is.
+inline constexpr double kFilteredTraceRel = 0x1p-37;
+
 template <class T> std::string json_value(const T& x) {
   if constexpr (std::is_same_v<T, Rational>) {
-    return '"' + num::to_text(x) + '"';
+    std::string t = num::to_text(x);
+    if (t.size() > kMaxExactTextChars)
+      throw std::length_error("an exact number of " + std::to_string(t.size()) + " characters, more than the " + std::to_string(kMaxExactTextChars) +
+                              " a trace's numbers may have");
+    return '"' + t + '"';
   } else {
     const double d = num::to_double(x);  // a test on the value, not a search of every number's text
     if (!std::isfinite(d)) return std::isnan(d) ? "\"NaN\"" : d > 0 ? "\"Infinity\"" : "\"-Infinity\"";

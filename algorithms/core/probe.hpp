@@ -128,6 +128,7 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
   double num_double(std::uint32_t s) const override { return num::to_double(nums_[s]); }
   std::string num_text(std::uint32_t s) const override { return num::to_text(nums_[s]); }
   const Num& num_value(std::uint32_t s) const { return nums_[s]; }
+  std::span<const Num> numbers() const { return nums_; }  // every number recorded, variables and geometry
 
   // The recording calls are flattened: since the recorder has two push_back sites per vector
   // (here and the summarising scratch), GCC stopped inlining push_back, and recording went from

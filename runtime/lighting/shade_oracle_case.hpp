@@ -13,8 +13,10 @@ inline sw::oracle::ShadeCase oracle_case(const ShadeScene<Rational>& s) {
   c.scene_ambient = rgb(s.scene_ambient), c.emission = rgb(s.material.emission);
   c.ka = rgb(s.material.ka), c.kd = rgb(s.material.kd), c.ks = rgb(s.material.ks);
   c.shininess = s.material.params.shininess;
-  for (const Light<Rational>& l : s.lights) {
+  for (std::size_t i = 0; i < s.lights.size(); ++i) {
+    const Light<Rational>& l = s.lights[i];
     sw::oracle::ShadeLight o;
+    o.blocked = (s.blocked >> i) & 1u;
     o.type = l.type == LightType::point ? sw::oracle::ShadeLight::Type::point
              : l.type == LightType::spot ? sw::oracle::ShadeLight::Type::spot : sw::oracle::ShadeLight::Type::directional;
     o.where = l.where, o.spot_dir = l.spot_dir, o.cutoff = l.cone.degrees, o.exponent = l.cone.exponent;

@@ -115,7 +115,8 @@ BvhInput parse_common(const Json& j, bool with_ray) {
 std::shared_ptr<const Mesh> shared(Mesh m) { return std::make_shared<const Mesh>(std::move(m)); }
 
 struct BvhBuildSpec {
-  static constexpr std::array hooks{Hook::estimate_steps, Hook::step_cost};
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::step_cost, Hook::canonical};
+  static Json canonical(const Json& r) { return spatial::tree_canonical(r); }
   using Algo = spatial::BvhBuild;
   using Input = BvhInput;
   using Output = spatial::TreeOutput;

@@ -70,7 +70,8 @@ Mesh random_mesh(std::mt19937_64& rng, std::size_t n) {
 }
 
 struct KdBuildSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::canonical};
+  static Json canonical(const Json& r) { return tree_canonical(r); }
   using Algo = spatial::KdBuild;
   using Input = BuildInput;
   using Output = TreeOutput;

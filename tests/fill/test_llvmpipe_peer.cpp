@@ -60,10 +60,7 @@ TEST_CASE("the catalog's triangle fills equal llvmpipe on its sub-pixel grid", "
   const auto cases = on_grid_cases(2000, 34);
   for (const char* id : {"triangle-edge", "triangle-dda"}) {
     const CatalogComparison c = compare_catalog(gl, cases, id, false);
-    if (!c.found) {
-      WARN(std::string(id) + " is not in the catalog: skipped");
-      continue;
-    }
+    REQUIRE(c.found);  // a renamed algorithm fails here, it is not skipped
     INFO(std::string(id) + " (" + c.numeric + "): " + std::to_string(c.triangles) + " triangles, first error: " + c.first_error);
     CHECK(c.errors == 0);
     CHECK(c.differing == 0);

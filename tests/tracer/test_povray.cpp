@@ -9,6 +9,7 @@
 //    where lighting grazes, on the mask's edges or where POV-Ray is wrong;
 //  - the CLI: a .pov file, and bad input refused with one line, exit 2 and no file.
 #include <catch2/catch.hpp>
+#include "peers.hpp"
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -92,10 +93,7 @@ TEST_CASE("POV-Ray export refuses what does not map, naming the JSON path", "[tr
 }
 
 TEST_CASE("POV-Ray object ids differ from ours only on silhouettes or where POV-Ray is wrong", "[tracer][povray]") {
-  if (!tracer::povray_available()) {
-    WARN("povray is not installed: the POV-Ray peer test is skipped (scripts/setup.sh installs it)");
-    return;
-  }
+  SW_REQUIRE_PEER(tracer::povray_available(), "povray");
   const auto dir = testing::scratch("povray-ids");
   for (const char* name : {"cornell-box", "glass-spheres", "diffuse-convex"}) {
     INFO(name);
