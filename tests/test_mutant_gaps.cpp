@@ -8,7 +8,7 @@
 #include <vector>
 #include "catalog.hpp"
 #ifdef SW_HAVE_VISUALIZER
-#include "headless.hpp"
+#include "headless/headless.hpp"
 #endif
 
 using namespace sw;

@@ -8,7 +8,7 @@
 #include <regex>
 #include <thread>
 #include "cli_harness.hpp"
-#include "headless.hpp"
+#include "headless/headless.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include "headless.hpp"
-#include "orbit_canvas.hpp"
+#include "headless/headless.hpp"
+#include "panels/orbit_canvas.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include "compare_plot.hpp"
-#include "headless.hpp"
-#include "theme.hpp"
+#include "panels/compare_plot.hpp"
+#include "headless/headless.hpp"
+#include "panels/theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -3,7 +3,7 @@
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include <cmath>
-#include "headless.hpp"
+#include "headless/headless.hpp"
 
 using namespace sw;
 using namespace sw::vis;

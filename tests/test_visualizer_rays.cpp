@@ -3,9 +3,9 @@
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include <cmath>
-#include "headless.hpp"
-#include "orbit_canvas.hpp"
-#include "theme.hpp"
+#include "headless/headless.hpp"
+#include "panels/orbit_canvas.hpp"
+#include "panels/theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <set>
 #include <unistd.h>
-#include "headless.hpp"
-#include "pixel_layer.hpp"
+#include "headless/headless.hpp"
+#include "panels/pixel_layer.hpp"
 
 using namespace sw;
 using namespace sw::vis;

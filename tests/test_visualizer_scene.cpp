@@ -3,8 +3,8 @@
 // tree's table follows, and the 3D view keeps every ray of the tree to the end.
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
-#include "headless.hpp"
-#include "scene_view.hpp"
+#include "headless/headless.hpp"
+#include "panels/scene_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 #include <set>
-#include "headless.hpp"
-#include "tree_view.hpp"
+#include "headless/headless.hpp"
+#include "panels/tree_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;

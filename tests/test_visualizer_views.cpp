@@ -6,13 +6,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "cli_harness.hpp"
-#include "headless.hpp"
-#include "image_view.hpp"
+#include "headless/headless.hpp"
+#include "panels/image_view.hpp"
 #include "lighting_oracle.hpp"
-#include "outline_layer.hpp"
-#include "plot_view.hpp"
+#include "panels/outline_layer.hpp"
+#include "panels/plot_view.hpp"
 #include "rays_oracle.hpp"
-#include "table_view.hpp"
+#include "panels/table_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;

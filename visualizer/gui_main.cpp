@@ -15,9 +15,9 @@
 #include <iostream>
 #include <random>
 #include <sstream>
-#include "app.hpp"
-#include "gl_texture.hpp"
-#include "image_io.hpp"
+#include "panels/app.hpp"
+#include "headless/gl_texture.hpp"
+#include "headless/image_io.hpp"
 
 using namespace sw;
 using namespace sw::vis;

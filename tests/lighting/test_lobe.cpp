@@ -6,9 +6,9 @@
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include <cmath>
-#include "compare.hpp"
-#include "headless.hpp"
-#include "lobe_view.hpp"
+#include "lessons/compare.hpp"
+#include "headless/headless.hpp"
+#include "panels/lobe_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;
