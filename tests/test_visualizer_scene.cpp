@@ -12,9 +12,10 @@ using namespace sw::vis;
 TEST_CASE("scene view: the preview is drawn and a click on a pixel records that pixel's history", "[visualizer][scene][render]") {
   HeadlessHost host(1280, 800);
   App& app = host.app();
+  Session& session = app.session();
   const Algorithm& alg = find_algorithm("whitted");
-  REQUIRE(app.open_algorithm(alg, Json::parse(alg.example), Numeric::f64));
-  CHECK(app.view() == View::scene);
+  REQUIRE(session.open_algorithm(alg, Json::parse(alg.example), Numeric::f64));
+  CHECK(session.view() == View::scene);
   host.render(3);
   const auto* sc = dynamic_cast<const SceneCanvas*>(app.canvas(0));
   REQUIRE(sc);
@@ -39,19 +40,19 @@ TEST_CASE("scene view: the preview is drawn and a click on a pixel records that 
   host.render(1);
   host.set_mouse(at, false);
   host.render(2);
-  REQUIRE(app.model(0)->input()["pixel"] == Json::array({62, 27}));
-  CHECK(app.view() == View::scene);
+  REQUIRE(session.model(0)->input()["pixel"] == Json::array({62, 27}));
+  CHECK(session.view() == View::scene);
   const auto& tree = sc->tree();
   REQUIRE(!tree.empty());
   CHECK(tree[0].object == 0);
   const bool blocked = std::any_of(tree.begin(), tree.end(), [](const tracer::RayNode& n) { return n.kind == tracer::RayNode::Kind::shadow && n.hit; });
   CHECK(blocked);
   // The trace is the clicked pixel's: its result is the preview's pixel, rounded to 8 bits.
-  const Json& c = app.model(0)->result()["colour"];
+  const Json& c = session.model(0)->result()["colour"];
   for (std::size_t k = 0; k < 3; ++k) CHECK(std::lround(255 * std::clamp(c[k].get<double>(), 0.0, 1.0)) == p.rgb[3 * (27 * 80 + 62) + k]);
   // The chrome pixel: at the last step the 3D view keeps the depth-2 ray (a recursive call's kept items last).
-  REQUIRE(app.open_algorithm(alg, Json::parse(alg.example), Numeric::f64));
-  const auto& m = *app.model(0);
+  REQUIRE(session.open_algorithm(alg, Json::parse(alg.example), Numeric::f64));
+  const auto& m = *session.model(0);
   bool depth2 = false;
   for (std::uint32_t g : m.visible_items(m.last()))
     if (const char* l = m.trace().geo_at(g).label) depth2 = depth2 || std::string_view(l) == "depth 2";

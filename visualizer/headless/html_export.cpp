@@ -158,9 +158,10 @@ int run_lesson_export(const ExportOptions& o) {
   budget.max_steps = o.max_steps;
   HeadlessHost host(w, h);
   App& app = host.app();
-  app.set_budget(budget);
-  if (!app.open_lesson(o.lesson)) throw InputError(app.error());
-  const std::size_t last = app.steps() - 1;
+  Session& session = app.session();
+  session.set_budget(budget);
+  if (!session.open_lesson(o.lesson)) throw InputError(session.error());
+  const std::size_t last = session.steps() - 1;
   const std::size_t from = o.from.value_or(0), to = o.to.value_or(last);
   for (auto [value, flag] : {std::pair{from, "--from"}, std::pair{to, "--to"}})
     if (value > last)
@@ -174,7 +175,7 @@ int run_lesson_export(const ExportOptions& o) {
     throw InputError(o.lesson + " has " + std::to_string(frames) + " steps; " + limit + " (choose a range with --from and --to)");
   }
 
-  const Json data = page_data(lesson, *app.model(0), from, to, w, h);
+  const Json data = page_data(lesson, *session.model(0), from, to, w, h);
   const std::string page = lesson_page(lesson.title, lesson.intro.empty() ? std::string() : markdown_html(lesson.intro), data);
 
   TempDir temp(target, o.html_dir);
@@ -182,7 +183,7 @@ int run_lesson_export(const ExportOptions& o) {
     throw InputError("--html " + o.html_dir + ": cannot create frames/ (" + ec.message() + ")");
   for (std::size_t s = from; s <= to; ++s) {
     app.restart_view();  // each frame as `stepwise render --lesson --step s` draws it, from the opening view
-    app.set_step(s);
+    session.set_step(s);
     write_png(temp.path() / frame_name(s), host.render(3).data(), w, h);
   }
   {

@@ -79,14 +79,15 @@ int run_render(const RenderOptions& o) {
   budget.max_steps = o.max_steps;
   HeadlessHost host(w, h, default_lessons_dir(), float(o.scale));
   App& app = host.app();
-  app.set_budget(budget);
+  Session& session = app.session();
+  session.set_budget(budget);
   app.set_presenting(o.present);
-  const bool ok = lesson ? app.open_lesson(o.lesson) : app.open_algorithm(*alg, input, numeric, compare);
-  if (!ok) throw InputError(app.error());
+  const bool ok = lesson ? session.open_lesson(o.lesson) : session.open_algorithm(*alg, input, numeric, compare);
+  if (!ok) throw InputError(session.error());
   // A lesson with other number types keeps its narration: each run narrates its own steps.
-  if (lesson && (!o.numeric.empty() || !o.compare.empty()) && !app.set_numerics(numeric, compare)) throw InputError(app.error());
-  if (view) app.set_view(*view);
-  const std::size_t last = app.steps() - 1;
+  if (lesson && (!o.numeric.empty() || !o.compare.empty()) && !session.set_numerics(numeric, compare)) throw InputError(session.error());
+  if (view) session.set_view(*view);
+  const std::size_t last = session.steps() - 1;
   auto check_step = [&](std::size_t s, const char* what) {
     if (s > last) throw InputError(std::string(what) + " " + std::to_string(s) + " is past the last step (" + std::to_string(last) + ")");
   };
@@ -94,7 +95,7 @@ int run_render(const RenderOptions& o) {
   if (!o.out.empty()) {
     const std::size_t step = o.step ? *o.step : lesson && lesson->start_step ? lesson->start_step : last;
     check_step(step, "--step");
-    app.set_step(step);
+    session.set_step(step);
     if (o.focus) app.jump_and_focus(step);
     write_png(o.out, host.render(3).data(), w, h);
     std::cerr << "stepwise: wrote step " << step << " to " << o.out << '\n';
@@ -108,7 +109,7 @@ int run_render(const RenderOptions& o) {
   if (to - from + 1 > kMaxFrames) throw InputError("the GIF would have " + std::to_string(to - from + 1) + " frames; at most " + std::to_string(kMaxFrames));
   GifWriter gif(o.gif, w, h, o.delay_ms);
   for (std::size_t s = from; s <= to; ++s) {
-    app.set_step(s);
+    session.set_step(s);
     gif.add_frame(host.render(s == from ? 3 : 2).data());
   }
   gif.commit();

@@ -1,6 +1,7 @@
 // The Lesson menu (the lessons by title in manifest order, Next and Previous) and the View menu
-// (presentation mode, fit), in the toolbar's menu bar.
-#include "panels/app.hpp"
+// (presentation mode, fit), in the toolbar's menu bar. The manifest itself is the Session's
+// (lessons/session_lessons.cpp).
+#include "panels/panels.hpp"
 
 namespace sw::vis {
 namespace {
@@ -17,62 +18,36 @@ std::string fit_text(std::string text, float width) {
 
 }  // namespace
 
-const std::vector<std::string>& App::lesson_titles() {
-  if (lesson_titles_.size() == lessons_.size()) return lesson_titles_;
-  lesson_titles_.clear();
-  for (const auto& path : lessons_) {
-    try {
-      lesson_titles_.push_back(load_lesson(path).title);
-    } catch (const InputError& e) {  // still listed, so that choosing it shows the error
-      lesson_titles_.push_back(path.filename().string() + " (" + e.what() + ")");
-    }
-  }
-  return lesson_titles_;
-}
-
-bool App::open_adjacent_lesson(int delta) {
-  if (lessons_.empty()) return false;
-  // Where we are: the lesson open, else the one last tried (it may have failed to load).
-  std::optional<std::size_t> at = lesson_pos_;
-  for (std::size_t k = 0; lesson_ && k < lessons_.size(); ++k)
-    if (lessons_[k] == lesson_->path) at = k;
-  const long next = at ? long(*at) + delta : delta > 0 ? 0 : -1;
-  if (next < 0 || next >= long(lessons_.size())) return false;
-  lesson_pos_ = std::size_t(next);
-  return open_lesson(lessons_[*lesson_pos_]);
-}
-
-void App::draw_menu_bar() {
+void draw_menu_bar(Session& s, Chrome& c) {
   if (!ImGui::BeginMenuBar()) return;
-  std::optional<std::size_t> current;
-  for (std::size_t k = 0; lesson_ && k < lessons_.size(); ++k)
-    if (lessons_[k] == lesson_->path) current = k;
+  const std::optional<std::size_t> current = s.lesson_index();
+  const std::size_t count = s.lessons().size();
   if (ImGui::BeginMenu("Lesson")) {
-    if (!lessons_error_.empty()) ImGui::TextColored(theme::kError, "%s", lessons_error_.c_str());
-    const auto& titles = lesson_titles();
+    if (!s.lessons_error().empty()) ImGui::TextColored(theme::kError, "%s", s.lessons_error().c_str());
+    const auto& titles = s.lesson_titles();
     for (std::size_t k = 0; k < titles.size(); ++k) {
       const std::string item = std::to_string(k + 1) + ". " + titles[k];
-      if (ImGui::MenuItem(item.c_str(), nullptr, current == k) && current != k) lesson_pos_ = k, open_lesson(lessons_[k]);
+      if (ImGui::MenuItem(item.c_str(), nullptr, current == k) && current != k) s.open_manifest_lesson(k);
     }
     ImGui::Separator();
-    const bool has_next = !current || *current + 1 < lessons_.size(), has_prev = current && *current > 0;
-    if (ImGui::MenuItem("Next lesson", "Ctrl+Right", false, has_next)) open_adjacent_lesson(+1);
-    if (ImGui::MenuItem("Previous lesson", "Ctrl+Left", false, has_prev)) open_adjacent_lesson(-1);
+    const bool has_next = !current || *current + 1 < count, has_prev = current && *current > 0;
+    if (ImGui::MenuItem("Next lesson", "Ctrl+Right", false, has_next)) s.open_adjacent_lesson(+1);
+    if (ImGui::MenuItem("Previous lesson", "Ctrl+Left", false, has_prev)) s.open_adjacent_lesson(-1);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    ImGui::MenuItem("Presentation mode", "P", &presenting_);
-    if (ImGui::MenuItem("Fit the view", "F") && canvases_[0]) canvases_[0]->fit();
+    ImGui::MenuItem("Presentation mode", "P", &c.presenting);
+    if (ImGui::MenuItem("Fit the view", "F")) c.fit = true;
     ImGui::EndMenu();
   }
   // The presentation toggle, then the lesson open (its title and place), in the bar itself.
-  if (ImGui::MenuItem(presenting_ ? "Exit presentation" : "Present")) presenting_ = !presenting_;
+  if (ImGui::MenuItem(c.presenting ? "Exit presentation" : "Present")) c.presenting = !c.presenting;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Presentation mode (P): big fonts; the canvas, listing and narration only");
-  if (lesson_) {
+  if (const Lesson* l = s.lesson()) {
     ImGui::Separator();
-    if (current) ImGui::TextDisabled("%zu of %zu", *current + 1, lessons_.size());
+    if (current) ImGui::TextDisabled("%zu of %zu", *current + 1, count);
     const float room = ImGui::GetWindowContentRegionMax().x - ImGui::GetCursorPosX() - ImGui::GetStyle().ItemSpacing.x;
-    if (room > 3 * ImGui::GetFontSize()) ImGui::TextUnformatted(fit_text(lesson_->title, room).c_str());
+    if (room > 3 * ImGui::GetFontSize()) ImGui::TextUnformatted(fit_text(l->title, room).c_str());
   }
   ImGui::EndMenuBar();
 }

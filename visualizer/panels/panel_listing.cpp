@@ -1,29 +1,32 @@
 // The listing: the algorithm's pseudocode with the current step's line highlighted.
-#include "panels/app.hpp"
+#include "panels/panels.hpp"
 
 namespace sw::vis {
 
-void App::draw_listing(ImVec2 pos, ImVec2 size) {
-  place_next(pos, size);
+void ListingPanel::draw(const Session& s, const Chrome& c, const PanelRect& r) {
+  place_next(r.pos, r.size);
   // A step inside a nested call shows the callee's listing (its steps' lines are in it).
-  const StepRecord* st = alg_ && a_ ? &a_->trace().at(step_) : nullptr;
-  const Listing* listing = alg_ ? &alg_->listing : nullptr;
-  std::string title = alg_ ? std::string(alg_->listing.title) : std::string("Listing");
+  const Algorithm* alg = s.algorithm();
+  const TraceModel* m = s.model(0);
+  const std::size_t step = s.step();
+  const StepRecord* st = alg && m ? &m->trace().at(step) : nullptr;
+  const Listing* listing = alg ? &alg->listing : nullptr;
+  std::string title = alg ? std::string(alg->listing.title) : std::string("Listing");
   if (st && st->scope) {
-    listing = &a_->trace().scope_listing(st->scope);
-    title = std::string(listing->title) + "  (called by " + std::string(alg_->listing.title) + ")";
+    listing = &m->trace().scope_listing(st->scope);
+    title = std::string(listing->title) + "  (called by " + std::string(alg->listing.title) + ")";
   }
   title += "###Listing";
   ImGui::Begin(title.c_str(), nullptr, kPanelFlags);
-  highlighted_line_ = 0;
-  listing_rows_.clear();
-  if (!alg_ || !a_) {
+  highlighted_ = 0;
+  rows_.clear();
+  if (!alg || !m) {
     ImGui::End();
     return;
   }
   const std::uint32_t line = st->line;
-  highlighted_line_ = line;
-  ImGui::PushFont(fonts_.mono);
+  highlighted_ = line;
+  ImGui::PushFont(c.fonts.mono);
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, 3));
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const auto& lines = listing->lines;
@@ -67,20 +70,20 @@ void App::draw_listing(ImVec2 pos, ImVec2 size) {
       ImGui::PopStyleColor();
     }
     const float bottom = ImGui::GetCursorScreenPos().y;
-    listing_rows_.push_back({top.x, top.y, bottom});
+    rows_.push_back({top.x, top.y, bottom});
     dl->ChannelsSetCurrent(0);
     if (current) {
       dl->AddRectFilled(ImVec2(top.x - 4, top.y - 2), ImVec2(top.x + ImGui::GetContentRegionAvail().x + 4, bottom - 2), theme::kLineHighlight, 2);
       // Centre the line for two frames after the step changes: the first frame of a window clamps
       // the scroll to a content height it has not measured yet.
-      if (listing_scrolled_to_ != step_) listing_scrolled_to_ = step_, listing_scroll_frames_ = 2;
-      if (listing_scroll_frames_ > 0) ImGui::SetScrollFromPosY(top.y - ImGui::GetWindowPos().y, 0.5f), --listing_scroll_frames_;
+      if (scrolled_to_ != step) scrolled_to_ = step, scroll_frames_ = 2;
+      if (scroll_frames_ > 0) ImGui::SetScrollFromPosY(top.y - ImGui::GetWindowPos().y, 0.5f), --scroll_frames_;
     }
     dl->ChannelsMerge();
   }
   ImGui::PopStyleVar();
   ImGui::PopFont();
-  listing_content_h_ = ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y;
+  content_h_ = ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y;
   ImGui::End();
 }
 

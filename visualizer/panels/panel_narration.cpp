@@ -1,7 +1,7 @@
 // The narration under the canvas: the lesson's intro (collapsible, always there), then the section
 // each run shows at the current step, with its values filled in (one per run when two runs show
 // different text), then the quiz. Markdown comes from md4c and is laid out here word by word.
-#include "panels/app.hpp"
+#include "panels/panels.hpp"
 #include "lessons/markdown.hpp"
 
 namespace sw::vis {
@@ -56,66 +56,69 @@ void wrapped_spans(const std::vector<MdSpan>& spans, ImFont* mono, float left, b
 
 }  // namespace
 
-void App::draw_markdown(const std::string& text) {
+void draw_markdown(const std::string& text, const theme::Fonts& fonts) {
   const float left = ImGui::GetCursorPosX();
   for (const MdBlock& b : parse_markdown(text)) {
     switch (b.kind) {
       case MdBlock::Kind::code:
-        ImGui::PushFont(fonts_.mono);
+        ImGui::PushFont(fonts.mono);
         for (const MdSpan& s : b.spans) ImGui::TextUnformatted(s.text.c_str());
         ImGui::PopFont();
         break;
       case MdBlock::Kind::heading:
-        ImGui::PushFont(fonts_.title);
-        wrapped_spans(b.spans, fonts_.mono, left);
+        ImGui::PushFont(fonts.title);
+        wrapped_spans(b.spans, fonts.mono, left);
         ImGui::PopFont();
         break;
       case MdBlock::Kind::item: {
         const float indent = left + 22.f * float(b.depth);
         ImGui::SetCursorPosX(indent - ImGui::CalcTextSize(b.marker.c_str()).x - 6.f);
         ImGui::TextUnformatted(b.marker.c_str());
-        wrapped_spans(b.spans, fonts_.mono, indent, true);
+        wrapped_spans(b.spans, fonts.mono, indent, true);
         break;
       }
       default:
-        wrapped_spans(b.spans, fonts_.mono, left + (b.kind == MdBlock::Kind::quote ? 14.f : 22.f * float(b.depth)));
+        wrapped_spans(b.spans, fonts.mono, left + (b.kind == MdBlock::Kind::quote ? 14.f : 22.f * float(b.depth)));
         break;
     }
     ImGui::Dummy(ImVec2(0, 3));
   }
 }
 
-void App::draw_narration(ImVec2 pos, ImVec2 size) {
-  place_next(pos, size);
-  ImGui::Begin(lesson_ ? "Lesson###Narration" : "About###Narration", nullptr, kPanelFlags);
-  if (lesson_) {
-    ImGui::PushFont(fonts_.title);
-    ImGui::TextUnformatted(lesson_->title.c_str());
+void draw_narration(Session& s, const Chrome& c, const PanelRect& r) {
+  place_next(r.pos, r.size);
+  const Lesson* lesson = s.lesson();
+  ImGui::Begin(lesson ? "Lesson###Narration" : "About###Narration", nullptr, kPanelFlags);
+  if (lesson) {
+    ImGui::PushFont(c.fonts.title);
+    ImGui::TextUnformatted(lesson->title.c_str());
     ImGui::PopFont();
     ImGui::SameLine();
-    bool quiz = quiz_.on;
-    if (ImGui::Checkbox("Quiz (Q)", &quiz)) set_quiz(quiz);
-    if (!lesson_->intro.empty() && ImGui::CollapsingHeader("Introduction", step_ == lesson_->start_step ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-      draw_markdown(lesson_->intro);
-    if (a_) {
+    bool quiz = s.quiz();
+    if (ImGui::Checkbox("Quiz (Q)", &quiz)) s.set_quiz(quiz);
+    lesson = s.lesson();
+    const std::size_t step = s.step();
+    if (!lesson->intro.empty() && ImGui::CollapsingHeader("Introduction", step == lesson->start_step ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+      draw_markdown(lesson->intro, c.fonts);
+    if (const TraceModel* a = s.model(0)) {
       // Each run narrates its own step; two runs that say the same thing say it once.
-      const std::string ta = narrate(*lesson_, *a_, std::min(step_, a_->last()));
-      const std::string tb = b_ ? narrate(*lesson_, *b_, std::min(step_, b_->last())) : std::string();
+      const TraceModel* b = s.model(1);
+      const std::string ta = narrate(*lesson, *a, std::min(step, a->last()));
+      const std::string tb = b ? narrate(*lesson, *b, std::min(step, b->last())) : std::string();
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.93f, 0.75f, 1));
       if (!tb.empty() && tb != ta) {
-        const std::string la = compare_.other ? std::string(alg_->id) : std::string(numeric_name(numeric_));
-        ImGui::TextColored(theme::kDim, "%s:", la.c_str());
-        draw_markdown(ta.empty() ? "*(no narration at this step)*" : ta);
-        ImGui::TextColored(theme::kDim, "%s:", compare_.label().c_str());
-        draw_markdown(tb);
+        ImGui::TextColored(theme::kDim, "%s:", s.run_name(0).c_str());
+        draw_markdown(ta.empty() ? "*(no narration at this step)*" : ta, c.fonts);
+        ImGui::TextColored(theme::kDim, "%s:", s.run_name(1).c_str());
+        draw_markdown(tb, c.fonts);
       } else {
-        draw_markdown(ta);
+        draw_markdown(ta, c.fonts);
       }
       ImGui::PopStyleColor();
     }
-    if (quiz_.on) draw_quiz();
-  } else if (alg_) {
-    ImGui::TextWrapped("%s", std::string(alg_->summary).c_str());
+    if (s.quiz()) draw_quiz(s, c);
+  } else if (const Algorithm* alg = s.algorithm()) {
+    ImGui::TextWrapped("%s", std::string(alg->summary).c_str());
     ImGui::TextDisabled("No lesson open: pick one in the Lesson menu for narration.");
   }
   ImGui::End();

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include "panels/app.hpp"
+#include "panels/panels.hpp"
 
 namespace sw::vis {
 namespace {
@@ -44,14 +44,18 @@ void compare_cell(const VarState& v) {
 
 }  // namespace
 
-void App::draw_state(ImVec2 pos, ImVec2 size) {
-  place_next(pos, size);
+void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
+  place_next(r.pos, r.size);
   ImGui::Begin("State", nullptr, kPanelFlags);
-  if (!a_) {
+  const TraceModel* a = s.model(0);
+  if (!a) {
     ImGui::End();
     return;
   }
-  const auto sa = a_->state_at(step_);
+  const TraceModel* b = s.model(1);
+  const std::size_t step = s.step();
+  const bool other = s.comparison().other != nullptr;
+  const auto sa = a->state_at(step);
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(4, 1));
   ImGui::TextColored(theme::kChanged, "changed");
   ImGui::SameLine();
@@ -60,11 +64,11 @@ void App::draw_state(ImVec2 pos, ImVec2 size) {
   ImGui::TextDisabled("earlier");
   constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp |
                                      ImGuiTableFlags_ScrollY;
-  if (!b_) {
+  if (!b) {
     if (ImGui::BeginTable("vars", 2, kTable)) {
       ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("variable", ImGuiTableColumnFlags_WidthFixed, 96);
-      ImGui::TableSetupColumn(("value (" + std::string(numeric_name(numeric_)) + ")").c_str());
+      ImGui::TableSetupColumn(("value (" + std::string(numeric_name(s.numeric())) + ")").c_str());
       ImGui::TableHeadersRow();
       for (const VarState& v : sa) {
         ImGui::TableNextRow();
@@ -79,19 +83,19 @@ void App::draw_state(ImVec2 pos, ImVec2 size) {
     ImGui::End();
     return;
   }
-  const std::size_t step_b = std::min(step_, b_->last());
-  const auto sb = b_->state_at(step_b);
-  if (step_b != step_ && !compare_.other) ImGui::TextColored(theme::kError, "%s has only %zu steps", compare_.label().c_str(), b_->size());
-  const bool plot = !compare_.other;  // steps pair up only for two number types
+  const std::size_t step_b = std::min(step, b->last());
+  const auto sb = b->state_at(step_b);
+  if (step_b != step && !other) ImGui::TextColored(theme::kError, "%s has only %zu steps", s.run_name(1).c_str(), b->size());
+  const bool with_plot = !other;  // steps pair up only for two number types
   const float plot_h = 64;
-  if (ImGui::BeginTable("vars2", 4, kTable, ImVec2(0, plot ? -(plot_h + ImGui::GetFrameHeightWithSpacing() + 8) : 0))) {
+  if (ImGui::BeginTable("vars2", 4, kTable, ImVec2(0, with_plot ? -(plot_h + ImGui::GetFrameHeightWithSpacing() + 8) : 0))) {
     ImGui::TableSetupScrollFreeze(0, 1);
     ImGui::TableSetupColumn("variable", ImGuiTableColumnFlags_WidthFixed, 70);
-    ImGui::TableSetupColumn(compare_.other ? std::string(alg_->id).c_str() : std::string(numeric_name(numeric_)).c_str());
-    ImGui::TableSetupColumn(compare_.label().c_str());
+    ImGui::TableSetupColumn(s.run_name(0).c_str());
+    ImGui::TableSetupColumn(s.run_name(1).c_str());
     ImGui::TableSetupColumn("|difference|", ImGuiTableColumnFlags_WidthFixed, 90);
     ImGui::TableHeadersRow();
-    for (std::string_view name : a_->var_names()) {
+    for (std::string_view name : a->var_names()) {
       const VarState *x = find_var(sa, name), *y = find_var(sb, name);
       if (!x && !y) continue;
       ImGui::TableNextRow();
@@ -110,8 +114,8 @@ void App::draw_state(ImVec2 pos, ImVec2 size) {
     }
     ImGui::EndTable();
   }
-  if (plot)
-    if (auto s = diff_plot_.draw(a_, b_, step_, plot_h)) set_step(*s), playing_ = false;
+  if (with_plot)
+    if (const auto to = plot.draw(s.model_ptr(0), s.model_ptr(1), step, plot_h)) s.go(*to);
   ImGui::PopStyleVar();
   ImGui::End();
 }
