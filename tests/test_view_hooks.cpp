@@ -1,10 +1,12 @@
 // The view hooks Specs declare (runtime/views.hpp): the exact curves' outlines lie on the curves,
 // marching squares finds a circle, the sweep runs what the CLI runs on the very sample inputs, and
-// every declared view and table line exists.
+// every declared view and table line exists, and every result key a view reads is declared (and
+// every declared key is in the results).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "catalog.hpp"
 #include "contour.hpp"
+#include "lessons/result_keys.hpp"
 
 using namespace sw;
 
@@ -154,4 +156,35 @@ TEST_CASE("view hooks: every sample of a shading sweep is the model on the spher
       CHECK(on > 20);
     }
   }
+}
+
+TEST_CASE("view hooks: every result key a view reads is declared by the algorithms it reads it from", "[views][result_keys]") {
+  for (const Algorithm& alg : catalog()) {
+    INFO(alg.id);
+    // Declared keys are in the results: the example's in each mode.
+    for (Numeric n : alg.numerics) {
+      INFO(numeric_name(n));
+      Json r;
+      try {
+        r = alg.open(parse_json_text(alg.example, "example"), n).run();
+      } catch (const InputError&) {
+        continue;  // the example is not this mode's input (fractions in int mode)
+      }
+      for (std::string_view key : alg.result_keys) CHECK(r.contains(std::string(key)));
+      // The keys views read: declared where they must be, and wherever the results have them.
+      for (const vis::ResultRead* read : vis::result_reads::all) {
+        if (!read->reads_from(alg)) continue;
+        INFO(read->reader << " reads '" << read->key << "'");
+        if (read->required || r.contains(std::string(read->key))) CHECK(alg.declares_result(read->key));
+      }
+    }
+  }
+  // The reads as the views make them: nothing from an undeclared key.
+  const Algorithm& dda = find_algorithm("dda-line");
+  const auto m = vis::record_model(dda, parse_json_text(dda.example, "example"), Numeric::exact);
+  CHECK_FALSE(vis::read_result(*m, vis::result_reads::strip_hit));
+  const Algorithm& box = find_algorithm("ray-box");
+  const auto b = vis::record_model(box, parse_json_text(box.example, "example"), Numeric::exact);
+  REQUIRE(vis::read_result(*b, vis::result_reads::strip_hit));
+  CHECK(vis::read_result(*b, vis::result_reads::strip_hit)->is_boolean());
 }

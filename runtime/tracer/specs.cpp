@@ -41,7 +41,7 @@ std::size_t history_steps(const HistoryInput& in) {
 }
 
 struct WhittedSpec {
-  static constexpr std::array hooks{Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::result_keys};
   using Algo = tracer::Whitted;
   using Input = HistoryInput;
   using Output = WhittedOutput;
@@ -69,6 +69,7 @@ struct WhittedSpec {
   }
   static std::size_t ops(const Output&) { return 1; }
   static std::size_t estimate_steps(const Input& in) { return history_steps(in); }
+  static constexpr std::array result_keys{std::string_view("colour")};  // the scene view shows the pixel's colour
   // The renderer's own pixel, untraced (tests/tracer/test_pixel_history.cpp holds it to render()).
   static Output oracle(const Input& in) { return {tracer::pixel_colour(*tracer::history_scene(in), in.i, in.j)}; }
   static std::vector<BenchSet<Input>> bench_sets() {

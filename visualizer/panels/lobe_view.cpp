@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include "lessons/result_keys.hpp"
 #include "panels/chart.hpp"  // nice_ceil
 #include "panels/theme.hpp"
 
@@ -130,9 +131,8 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
   // The input's own eye, where it lies in the plane.
   if (angles && std::isfinite((*angles)[1])) {
     ray((*angles)[1], theme::kHandleP0, "e", false);
-    const Json& r = in.model->result();
-    if (r.is_object() && r.contains("value") && r["value"].is_number())
-      dl->AddCircleFilled(at((*angles)[1], r["value"].get<double>()), 5.f, theme::kHandleP0);
+    if (const Json* v = read_result(*in.model, result_reads::lobe_value); v && v->is_number())
+      dl->AddCircleFilled(at((*angles)[1], v->get<double>()), 5.f, theme::kHandleP0);
   }
   // Hover: the direction under the mouse; a click traces it.
   if (hovered && lobe_.samples() && io.MousePos.y < centre_.y) {

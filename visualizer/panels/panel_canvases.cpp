@@ -2,6 +2,7 @@
 // compare strip that counts what differs between the two runs. The canvases follow the Session:
 // its view, its fresh opens (fit) and the steps it asks to focus on.
 #include <algorithm>
+#include "lessons/result_keys.hpp"
 #include "panels/panels.hpp"
 #include "panels/view_registry.hpp"
 
@@ -120,8 +121,7 @@ void CanvasPanel::draw_compare_strip(Session& s) {
   const TraceModel &a = *s.model(0), &b = *s.model(1);
   if (cmp.other) {  // two algorithms: their results side by side (their steps do not pair up)
     auto outcome = [](const TraceModel& m) {
-      const Json& r = m.result();
-      if (r.is_object() && r.contains("value")) return "value " + (r["value"].is_number() ? std::to_string(r["value"].get<double>()) : r["value"].dump());
+      if (const Json* v = read_result(m, result_reads::strip_value)) return "value " + (v->is_number() ? std::to_string(v->get<double>()) : v->dump());
       return std::string(m.size() ? "done" : "no steps");
     };
     ImGui::Text("%s: %zu steps, %s    %s: %zu steps, %s", std::string(s.algorithm()->id).c_str(), st.steps_a, outcome(a).c_str(), std::string(cmp.other->id).c_str(),
@@ -136,7 +136,10 @@ void CanvasPanel::draw_compare_strip(Session& s) {
     ImGui::SameLine();
     ImGui::TextColored(st.pixel_mismatches ? theme::kError : theme::kGood, "%zu mismatched pixels", st.pixel_mismatches);
   } else {  // no pixels to count: compare the two outcomes (hit or miss, where the results say)
-    auto outcome = [](const TraceModel& m) { return m.result().is_object() && m.result().contains("hit") ? (m.result()["hit"] == true ? "hit" : "miss") : "done"; };
+    auto outcome = [](const TraceModel& m) {
+      const Json* hit = read_result(m, result_reads::strip_hit);
+      return hit ? (*hit == true ? "hit" : "miss") : "done";
+    };
     const std::string oa = outcome(a), ob = outcome(b);
     ImGui::Text("%s: %zu steps, %s    %s: %zu steps, %s    ", na.c_str(), st.steps_a, oa.c_str(), nb.c_str(), st.steps_b, ob.c_str());
     ImGui::SameLine();

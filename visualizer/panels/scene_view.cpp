@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include "lessons/result_keys.hpp"
 #include "panels/theme.hpp"
 
 namespace sw::vis {
@@ -110,9 +111,8 @@ CanvasEvents SceneCanvas::draw(const CanvasInput& in, ImVec2 size) {
 }
 
 void SceneCanvas::draw_side(const TraceModel& m, std::size_t step, CanvasEvents& ev) {
-  const Json& r = m.result();
-  if (r.contains("colour") && r["colour"].is_array() && r["colour"].size() == 3) {
-    const std::array<double, 3> c{r["colour"][0].get<double>(), r["colour"][1].get<double>(), r["colour"][2].get<double>()};
+  if (const Json* r = read_result(m, result_reads::scene_colour); r && r->is_array() && r->size() == 3) {
+    const std::array<double, 3> c{(*r)[0].get<double>(), (*r)[1].get<double>(), (*r)[2].get<double>()};
     ImGui::TextUnformatted("The pixel's colour:");
     ImGui::SameLine();
     colour_cell(c);
