@@ -14,8 +14,8 @@ namespace sw::vis {
 
 struct ResultRead {
   std::string_view key;
-  std::string_view reader;                // who reads it, for messages
-  bool (*reads_from)(const Algorithm&);   // the algorithms it is read from
+  std::string_view reader;               // who reads it, for messages
+  bool (*reads_from)(const Algorithm&);  // the algorithms it is read from
   // Those algorithms must declare the key; otherwise it is read where declared (and must be
   // declared where their results have it).
   bool required;
@@ -26,13 +26,17 @@ namespace result_reads {
 constexpr bool shows(const Algorithm& a, View v) { return std::find(a.views.begin(), a.views.end(), v) != a.views.end(); }
 
 // The lobe view: the input's own eye, marked at the term's value.
-inline constexpr ResultRead lobe_value{"value", "the lobe view's eye", [](const Algorithm& a) { return shows(a, View::lobe); }, true};
+inline constexpr ResultRead lobe_value{"value", "the lobe view's eye", [](const Algorithm& a) { return shows(a, View::lobe); },
+                                       true};
 // The scene view: the pixel's colour above the ray tree.
-inline constexpr ResultRead scene_colour{"colour", "the scene view's pixel colour", [](const Algorithm& a) { return shows(a, View::scene); }, true};
+inline constexpr ResultRead scene_colour{"colour", "the scene view's pixel colour",
+                                         [](const Algorithm& a) { return shows(a, View::scene); }, true};
 // The compare strip of two algorithms of a compare group: each one's value.
-inline constexpr ResultRead strip_value{"value", "the compare strip of two algorithms", [](const Algorithm& a) { return !a.compare_group.empty(); }, true};
+inline constexpr ResultRead strip_value{"value", "the compare strip of two algorithms",
+                                        [](const Algorithm& a) { return !a.compare_group.empty(); }, true};
 // The compare strip of two number types without pixels to count: hit or miss, where there is one.
-inline constexpr ResultRead strip_hit{"hit", "the compare strip's outcome", [](const Algorithm& a) { return !shows(a, View::plane2d); }, false};
+inline constexpr ResultRead strip_hit{"hit", "the compare strip's outcome",
+                                      [](const Algorithm& a) { return !shows(a, View::plane2d); }, false};
 
 inline constexpr std::array all{&lobe_value, &scene_colour, &strip_value, &strip_hit};
 
