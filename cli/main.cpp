@@ -10,10 +10,10 @@
 #include "output.hpp"
 #include "trace_io.hpp"
 #ifdef SW_HAVE_RENDER
-#include "bench_plot.hpp"      // visualizer/: `stepwise bench --plot`
-#include "lesson_command.hpp"  // visualizer/: `stepwise lesson export|lint`
-#include "quiz_command.hpp"    // visualizer/: `stepwise quiz`
-#include "render_command.hpp"  // visualizer/: `stepwise render`
+#include "headless/bench_plot.hpp"      // visualizer/: `stepwise bench --plot`
+#include "headless/lesson_command.hpp"  // visualizer/: `stepwise lesson export|lint`
+#include "headless/quiz_command.hpp"    // visualizer/: `stepwise quiz`
+#include "headless/render_command.hpp"  // visualizer/: `stepwise render`
 #endif
 
 using namespace sw;

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string>
 #include "input.hpp"
-#include "lesson.hpp"
-#include "quiz.hpp"
+#include "lessons/lesson.hpp"
+#include "lessons/quiz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

@@ -53,6 +53,10 @@ const std::vector<Algorithm>& catalog() {
 
 bool Algorithm::supports(Numeric n) const { return std::find(numerics.begin(), numerics.end(), n) != numerics.end(); }
 
+bool Algorithm::declares_result(std::string_view key) const {
+  return std::find(result_keys.begin(), result_keys.end(), key) != result_keys.end();
+}
+
 std::string Algorithm::modes_text() const {
   std::string modes;
   for (Numeric n : numerics) modes += (modes.empty() ? "" : ", ") + std::string(numeric_name(n));

@@ -71,6 +71,11 @@ struct Algorithm {
   // app's "compare with" another algorithm): keys their examples share carry over.
   std::string_view compare_group;
   std::vector<Handle> handles;
+  // Keys every result of this algorithm has (its Spec's result_keys): the only result keys a
+  // view may read (visualizer/lessons/result_keys.hpp).
+  std::vector<std::string_view> result_keys;
+  PictureInfo picture;             // optional: the scene view's picture of the input (Run::picture)
+  bool summary_table = false;      // Run::summary_table gives a table from a recorded trace (the ray tree)
   std::vector<Numeric> numerics;  // the number types this algorithm runs on
   std::string example;            // a default input, as JSON text
   SpecFunctions fn{};
@@ -93,6 +98,7 @@ struct Algorithm {
   std::size_t step_cost(Numeric n) const { return fn.step_cost(n); }
 
   bool supports(Numeric n) const;
+  bool declares_result(std::string_view key) const;
   std::string modes_text() const;  // "float, double, exact"
 };
 

@@ -106,6 +106,14 @@ template <class Spec> class OpenSpec final : public OpenInput {
     if constexpr (names_hook<Spec>(Hook::outline)) return Spec::outline(in_, window, cell);
     else return OpenInput::outline(window, cell);
   }
+  Picture picture(std::int64_t max_side) const override {
+    if constexpr (names_hook<Spec>(Hook::picture)) return Spec::picture(in_, max_side);
+    else return OpenInput::picture(max_side);
+  }
+  SummaryTable summary_table(const TraceView& trace) const override {
+    if constexpr (names_hook<Spec>(Hook::summary_table)) return Spec::summary_table(in_, trace);
+    else return OpenInput::summary_table(trace);
+  }
 
  private:
   static constexpr auto untraced = [](auto, auto&& compute) {
@@ -126,6 +134,15 @@ template <class Spec> class OpenSpec final : public OpenInput {
 
   Input in_;
 };
+
+template <class Spec> constexpr bool result_keys_distinct() {
+  for (std::size_t i = 0; i < Spec::result_keys.size(); ++i) {
+    if (std::string_view(Spec::result_keys[i]).empty()) return false;
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::string_view(Spec::result_keys[i]) == std::string_view(Spec::result_keys[j])) return false;
+  }
+  return true;
+}
 
 template <class Spec> constexpr bool table_lines_exist() {
   for (std::string_view name : Spec::table_lines)
@@ -155,8 +172,19 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
     if constexpr (names_hook<Spec>(Hook::sweep_caption)) a.sweep.caption = Spec::sweep_caption;
     if constexpr (names_hook<Spec>(Hook::sweep_shaded)) a.sweep.shaded = Spec::sweep_shaded;
   }
-  if constexpr (names_hook<Spec>(Hook::lobe)) a.lobe.present = a.lobe.shaded = a.lobe.sample = a.lobe.angles = true;
+  if constexpr (names_hook<Spec>(Hook::lobe)) a.lobe = {.present = true, .shaded = true, .sample = true, .angles = true, .caption = {}};
   a.outline = names_hook<Spec>(Hook::outline);
+  if constexpr (names_hook<Spec>(Hook::result_keys)) {
+    static_assert(result_keys_distinct<Spec>(), "result_keys names a key twice, or an empty one");
+    a.result_keys.assign(Spec::result_keys.begin(), Spec::result_keys.end());
+  }
+  static_assert(!names_hook<Spec>(Hook::pick) || names_hook<Spec>(Hook::picture), "a pick needs a picture to click on");
+  a.picture.present = names_hook<Spec>(Hook::picture);
+  if constexpr (names_hook<Spec>(Hook::pick)) {
+    static_assert(!Spec::pick.empty() && Spec::pick[0] == '/', "pick is a JSON pointer into the input (\"/pixel\")");
+    a.picture.pick = Spec::pick;
+  }
+  a.summary_table = names_hook<Spec>(Hook::summary_table);
   if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
   if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;
   a.fn.open = [](const Algorithm& alg, const Json& j) -> std::shared_ptr<const OpenInput> { return std::make_shared<const OpenSpec<Spec>>(alg, j); };

@@ -22,6 +22,8 @@ void OpenInput::lobe(Numeric, const SweepGrid&, std::vector<float>&) const { und
 std::optional<std::array<double, 2>> OpenInput::lobe_angles() const { return std::nullopt; }
 Json OpenInput::lobe_sample(const SweepGrid&, int) const { undeclared(*alg_, "lobe sample"); }
 std::vector<Polyline2> OpenInput::outline(const Rect2&, double) const { undeclared(*alg_, "outline"); }
+Picture OpenInput::picture(std::int64_t) const { undeclared(*alg_, "picture"); }
+SummaryTable OpenInput::summary_table(const TraceView&) const { undeclared(*alg_, "summary table"); }
 
 Run::Run(std::shared_ptr<const OpenInput> in, Numeric n) : in_(std::move(in)), n_(n) {
   const Algorithm& alg = in_->algorithm();

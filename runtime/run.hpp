@@ -52,6 +52,8 @@ class OpenInput {
   virtual std::optional<std::array<double, 2>> lobe_angles() const;
   virtual Json lobe_sample(const SweepGrid&, int i) const;
   virtual std::vector<Polyline2> outline(const Rect2& window, double cell) const;
+  virtual Picture picture(std::int64_t max_side) const;
+  virtual SummaryTable summary_table(const TraceView& trace) const;
 
  protected:
   OpenInput(const Algorithm& alg, const Json& json);
@@ -98,6 +100,10 @@ class Run {
   std::optional<std::array<double, 2>> lobe_angles() const { return in_->lobe_angles(); }
   Json lobe_sample(const SweepGrid& g, int i) const { return in_->lobe_sample(g, i); }
   std::vector<Polyline2> outline(const Rect2& window, double cell) const { return in_->outline(window, cell); }
+  // A picture of the input, at most max_side pixels on a side (Algorithm::picture).
+  Picture picture(std::int64_t max_side) const { return in_->picture(max_side); }
+  // The algorithm's table of a trace recorded from this input (Algorithm::summary_table).
+  SummaryTable summary_table(const TraceView& trace) const { return in_->summary_table(trace); }
 
  private:
   std::shared_ptr<const OpenInput> in_;

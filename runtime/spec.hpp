@@ -49,8 +49,12 @@ enum class Hook : std::uint8_t {
   params,          // static std::vector<Param> params()
   compare_group,   // static constexpr std::string_view compare_group
   admit,           // static void admit(const Input&, Numeric): throws InputError if the input cannot run in that mode
+  result_keys,     // static constexpr std::array result_keys{"hit"sv, ...}: keys every result has, which views may read
+  picture,         // static Picture picture(const Input&, std::int64_t max_side): a picture of the input (the scene view)
+  pick,            // static constexpr std::string_view pick = "/pixel": the input's pointer a click on the picture sets
+  summary_table,   // static SummaryTable summary_table(const Input&, const TraceView&): a table from a recorded trace
 };
-inline constexpr std::size_t kHookCount = 19;
+inline constexpr std::size_t kHookCount = 23;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -92,6 +96,11 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::params: return requires { { S::params() } -> std::same_as<std::vector<Param>>; };
     case Hook::compare_group: return requires { { S::compare_group } -> std::convertible_to<std::string_view>; };
     case Hook::admit: return requires(const In& in, Numeric n) { S::admit(in, n); };
+    case Hook::result_keys:
+      return requires { { S::result_keys[0] } -> std::convertible_to<std::string_view>; S::result_keys.size(); };
+    case Hook::picture: return requires(const In& in) { { S::picture(in, std::int64_t{1}) } -> std::same_as<Picture>; };
+    case Hook::pick: return requires { { S::pick } -> std::convertible_to<std::string_view>; };
+    case Hook::summary_table: return requires(const In& in, const TraceView& t) { { S::summary_table(in, t) } -> std::same_as<SummaryTable>; };
   }
   return false;
 }

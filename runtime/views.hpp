@@ -3,8 +3,10 @@
 // handle (run.hpp) computes them.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 #include "core/number.hpp"
@@ -58,6 +60,49 @@ struct SweepInfo {
   bool angles = false;   // Run::lobe_angles: the light's and the eye's angles in the swept plane
   std::string_view caption;  // what a sample is, for the view's legend
   explicit operator bool() const { return present; }
+};
+
+// A picture of the input (the scene view's: a ray tracer's scene rendered once, through each
+// pixel's centre), at most max_side pixels on a side: a picture pixel covers scale x scale pixels
+// of the input's own image. Its notes say how it was made (the planner's decisions: each effect
+// on or off, and why).
+struct Picture {
+  std::int64_t width = 0, height = 0, scale = 1;
+  std::vector<std::uint8_t> rgb;  // 8-bit rows, top first
+  double seconds = 0;             // how long it took
+  struct Note {
+    std::string text, why;
+    std::optional<bool> on;  // an effect turned on or off; none: a remark
+  };
+  std::string notes_title;  // "Planner"
+  std::vector<Note> notes;
+};
+
+// What an algorithm's picture offers (Run::picture): a click on picture pixel (i, j) sets the
+// input at the JSON pointer `pick` to [i, j] (in the input's own pixels), and the view frames the
+// pixel the input has there.
+struct PictureInfo {
+  bool present = false;
+  std::string_view pick;  // "/pixel"; empty: a click picks nothing
+  explicit operator bool() const { return present; }
+};
+
+// A table computed from a recorded trace (Run::summary_table; the ray tree of a pixel's history): a row
+// per item with the steps it spans (a click goes to `step`; the current row is the last whose span
+// holds the current step; rows not begun yet are dimmed), cells of text and colour, and a total.
+struct SummaryTable {
+  struct Cell {
+    std::string text;
+    std::optional<std::array<double, 3>> rgb;  // a colour: a swatch, before the text
+  };
+  struct Row {
+    std::size_t step = 0, end = 0;
+    std::vector<Cell> cells;  // one per column
+  };
+  std::string title;  // "Ray tree"
+  std::vector<std::string> columns;
+  std::vector<Row> rows;
+  std::optional<Row> total;
 };
 
 // A world-coordinate window, and polylines in it.

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <set>
 #include "cli_harness.hpp"
-#include "html_page.hpp"
+#include "headless/html_page.hpp"
 
 namespace fs = std::filesystem;
 using sw::testing::run_stepwise;

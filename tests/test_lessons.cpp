@@ -2,9 +2,9 @@
 // and quizzes graded against the exact trace.
 #include <catch2/catch.hpp>
 #include <fstream>
-#include "lesson.hpp"
-#include "quiz.hpp"
-#include "trace_model.hpp"
+#include "lessons/lesson.hpp"
+#include "lessons/quiz.hpp"
+#include "lessons/trace_model.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -8,7 +8,7 @@
 #include <vector>
 #include "catalog.hpp"
 #ifdef SW_HAVE_VISUALIZER
-#include "headless.hpp"
+#include "headless/headless.hpp"
 #endif
 
 using namespace sw;
@@ -117,7 +117,7 @@ TEST_CASE("trace formats: the JSONL stream and the Recorder agree on every step 
 TEST_CASE("pixel canvas: world x goes right and world y goes up the screen", "[visualizer][render]") {
   vis::HeadlessHost host(960, 600);
   vis::App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"),
+  REQUIRE(app.session().open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"),
                              Numeric::exact));
   host.render();
   const vis::Canvas* c = app.canvas(0);

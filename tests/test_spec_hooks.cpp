@@ -26,6 +26,20 @@ struct WrongSignature : Fake {
   static constexpr std::array hooks{Hook::handles};
   static int handles() { return 0; }
 };
+// Names result_keys but declares a string, not an array of keys: caught at result_keys.
+struct KeysNotAnArray : Fake {
+  static constexpr std::array hooks{Hook::result_keys};
+  static constexpr int result_keys = 0;
+};
+// Defines a summary table but does not name it: caught at summary_table.
+struct UnnamedSummary : Fake {
+  static SummaryTable summary_table(const Input&, const TraceView&) { return {}; }
+};
+// A picture of the wrong type: caught at picture.
+struct WrongPicture : Fake {
+  static constexpr std::array hooks{Hook::picture};
+  static int picture(const Input&, std::int64_t) { return 0; }
+};
 struct Agreeing : Fake {
   static constexpr std::array hooks{Hook::error, Hook::canonical};
   static double error(const Output&, const Output&) { return 0; }
@@ -35,7 +49,11 @@ struct Agreeing : Fake {
 static_assert(hook_mismatch<Misspelt>() == std::size_t(Hook::canonical));
 static_assert(hook_mismatch<Unnamed>() == std::size_t(Hook::error));
 static_assert(hook_mismatch<WrongSignature>() == std::size_t(Hook::handles));
+static_assert(hook_mismatch<KeysNotAnArray>() == std::size_t(Hook::result_keys));
+static_assert(hook_mismatch<UnnamedSummary>() == std::size_t(Hook::summary_table));
+static_assert(hook_mismatch<WrongPicture>() == std::size_t(Hook::picture));
 static_assert(hook_mismatch<Agreeing>() == kHookCount);
+static_assert(std::size_t(Hook::summary_table) + 1 == kHookCount, "kHookCount counts every Hook");
 static_assert(hook_mismatch<Fake>() == kHookCount);
 
 }  // namespace

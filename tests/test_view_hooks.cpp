@@ -1,10 +1,12 @@
 // The view hooks Specs declare (runtime/views.hpp): the exact curves' outlines lie on the curves,
-// marching squares finds a circle, the sweep runs what the CLI runs on the very sample inputs, and
-// every declared view and table line exists.
+// marching squares finds a circle, the sweep runs what the CLI runs on the very sample inputs,
+// every declared view and table line exists, every result key a view reads is declared (and every
+// declared key is in the results), and the scene view's picture, pick and summary table.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "catalog.hpp"
 #include "contour.hpp"
+#include "lessons/result_keys.hpp"
 
 using namespace sw;
 
@@ -154,4 +156,80 @@ TEST_CASE("view hooks: every sample of a shading sweep is the model on the spher
       CHECK(on > 20);
     }
   }
+}
+
+TEST_CASE("view hooks: every result key a view reads is declared by the algorithms it reads it from", "[views][result_keys]") {
+  for (const Algorithm& alg : catalog()) {
+    INFO(alg.id);
+    // Declared keys are in the results: the example's in each mode.
+    for (Numeric n : alg.numerics) {
+      INFO(numeric_name(n));
+      Json r;
+      try {
+        r = alg.open(parse_json_text(alg.example, "example"), n).run();
+      } catch (const InputError&) {
+        continue;  // the example is not this mode's input (fractions in int mode)
+      }
+      for (std::string_view key : alg.result_keys) CHECK(r.contains(std::string(key)));
+      // The keys views read: declared where they must be, and wherever the results have them.
+      for (const vis::ResultRead* read : vis::result_reads::all) {
+        if (!read->reads_from(alg)) continue;
+        INFO(read->reader << " reads '" << read->key << "'");
+        if (read->required || r.contains(std::string(read->key))) CHECK(alg.declares_result(read->key));
+      }
+    }
+  }
+  // The reads as the views make them: nothing from an undeclared key.
+  const Algorithm& dda = find_algorithm("dda-line");
+  const auto m = vis::record_model(dda, parse_json_text(dda.example, "example"), Numeric::exact);
+  CHECK_FALSE(vis::read_result(*m, vis::result_reads::strip_hit));
+  const Algorithm& box = find_algorithm("ray-box");
+  const auto b = vis::record_model(box, parse_json_text(box.example, "example"), Numeric::exact);
+  REQUIRE(vis::read_result(*b, vis::result_reads::strip_hit));
+  CHECK(vis::read_result(*b, vis::result_reads::strip_hit)->is_boolean());
+}
+
+TEST_CASE("view hooks: the scene view's picture, pick and summary table come from the Spec", "[views][scene]") {
+  for (const Algorithm& alg : catalog()) {
+    INFO(alg.id);
+    const bool scene = std::find(alg.views.begin(), alg.views.end(), View::scene) != alg.views.end();
+    CHECK(bool(alg.picture) == scene);  // the scene view draws the picture, its notes and the summary
+    CHECK(alg.summary_table == scene);
+    if (!scene) CHECK_THROWS_AS(alg.open(parse_json_text(alg.example, "example")).picture(8), std::logic_error);
+  }
+  const Algorithm& whitted = find_algorithm("whitted");
+  CHECK(whitted.picture.pick == "/pixel");
+  const Json input = parse_json_text(whitted.example, "example");
+  const auto opened = inputs_opened();
+  const Run run = whitted.open(input, Numeric::f64);
+  const Picture p = run.picture(40);     // 80x60 at most 40 a side: every other pixel
+  CHECK(inputs_opened() - opened == 1);  // the picture is made from the opened input: no re-read
+  CHECK(p.scale == 2);
+  CHECK(p.width == 40);
+  CHECK(p.height == 30);
+  CHECK(p.rgb.size() == 3 * 40 * 30);
+  CHECK(p.notes_title == "Planner");
+  CHECK(!p.notes.empty());
+  for (const Picture::Note& n : p.notes) CHECK((n.on.has_value() && !n.why.empty()));
+  // The summary of a recorded trace: a row per ray, each ray that returned with its colours, and
+  // the shares summing to the pixel's colour.
+  const Recorded rec = run.record();
+  const SummaryTable t = run.summary_table(*rec.trace);
+  CHECK(t.title == "Ray tree");
+  CHECK(t.columns == std::vector<std::string>{"ray", "depth", "kind", "weight", "found", "share"});
+  REQUIRE(t.rows.size() >= 2);
+  CHECK(t.rows[0].cells[2].text == "primary");
+  std::size_t coloured = 0;
+  for (const SummaryTable::Row& row : t.rows) {
+    REQUIRE(row.cells.size() == t.columns.size());
+    CHECK(row.step <= row.end);
+    CHECK(row.end < rec.trace->size());
+    coloured += row.cells[5].rgb.has_value();
+  }
+  CHECK(coloured >= 2);  // the chrome sphere and what its mirror ray finds
+  REQUIRE(t.total);
+  REQUIRE(t.total->cells[5].rgb);
+  const Json& c = rec.result["colour"];
+  for (std::size_t k = 0; k < 3; ++k) CHECK((*t.total->cells[5].rgb)[k] == Approx(c[k].get<double>()).margin(1e-12));
+  CHECK(c[0].get<double>() + c[1].get<double>() + c[2].get<double>() > 0.1);  // not black: the colours are there
 }

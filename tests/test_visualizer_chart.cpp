@@ -8,7 +8,7 @@
 #include <regex>
 #include <thread>
 #include "cli_harness.hpp"
-#include "headless.hpp"
+#include "headless/headless.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -136,7 +136,7 @@ TEST_CASE("visualizer chart: bench --plot refuses a bad name, an unwritable plac
 TEST_CASE("visualizer chart: the Accuracy window benches on a thread and shows the chart", "[visualizer][chart]") {
   HeadlessHost host(1100, 700);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[9,4]})", "t"), Numeric::exact));
+  REQUIRE(app.session().open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[9,4]})", "t"), Numeric::exact));
   app.set_accuracy_open(true);
   host.render(1);
   REQUIRE(app.accuracy().run());

@@ -11,8 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include "headless.hpp"
-#include "orbit_canvas.hpp"
+#include "headless/headless.hpp"
+#include "panels/orbit_canvas.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -64,11 +64,12 @@ void check_layout(HeadlessHost& host, bool presenting) {
 TEST_CASE("visualizer classroom: at 1024x640 the panels tile the window and the toolbar fits", "[visualizer][classroom]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();
+  Session& session = app.session();
   const auto lessons = lesson_manifest(default_lessons_dir());
   // Two segments (four exact fields), sliders of two compared models, and the first lesson.
   for (const char* name : {"01-dda-line.md", "22-phong-blinn.md", "19-gouraud-phong.md"}) {
     INFO(name);
-    REQUIRE(app.open_lesson(default_lessons_dir() / name));
+    REQUIRE(session.open_lesson(default_lessons_dir() / name));
     host.render(3);
     check_layout(host, false);
     app.set_presenting(true);
@@ -77,7 +78,7 @@ TEST_CASE("visualizer classroom: at 1024x640 the panels tile the window and the 
     app.set_presenting(false);
   }
   // An algorithm with a JSON input field and the compare toggle on.
-  REQUIRE(app.open_algorithm(find_algorithm("ray-triangle-mt"),
+  REQUIRE(session.open_algorithm(find_algorithm("ray-triangle-mt"),
                              parse_json_text(find_algorithm("ray-triangle-mt").example, "example"), Numeric::f64,
                              Comparison(Numeric::f32)));
   host.render(3);
@@ -86,7 +87,7 @@ TEST_CASE("visualizer classroom: at 1024x640 the panels tile the window and the 
 
 TEST_CASE("visualizer classroom: at 2560x1440 and scale 2 the panels tile the window", "[visualizer][classroom]") {
   HeadlessHost host(2560, 1440, default_lessons_dir(), 2.f);
-  REQUIRE(host.app().open_first_lesson());
+  REQUIRE(host.app().session().open_first_lesson());
   host.render(3);
   CHECK(host.app().layout().em == Approx(30));  // the body font at scale 2
   check_layout(host, false);
@@ -95,7 +96,7 @@ TEST_CASE("visualizer classroom: at 2560x1440 and scale 2 the panels tile the wi
 TEST_CASE("visualizer classroom: presentation mode by key, with bigger fonts", "[visualizer][classroom]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();
-  REQUIRE(app.open_first_lesson());
+  REQUIRE(app.session().open_first_lesson());
   host.render(3);
   const float toolbar_h = app.layout().toolbar.size.y;
   host.type('p');
@@ -112,36 +113,38 @@ TEST_CASE("visualizer classroom: the Lesson menu lists titles in manifest order,
           "[visualizer][classroom]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();
+  Session& session = app.session();
   const auto lessons = lesson_manifest(default_lessons_dir());
-  const auto& titles = app.lesson_titles();
+  const auto& titles = session.lesson_titles();
   REQUIRE(titles.size() == lessons.size());
   for (std::size_t k : {std::size_t(0), std::size_t(1), lessons.size() - 1}) CHECK(titles[k] == load_lesson(lessons[k]).title);
   CHECK(titles[0] != titles[1]);
-  REQUIRE(app.open_first_lesson());
+  REQUIRE(session.open_first_lesson());
   host.render(2);
   ImGui::GetIO().KeyCtrl = true;
   host.press(ImGuiKey_RightArrow);
   host.render(2);
-  REQUIRE(app.model(0));
-  CHECK(&app.model(0)->algorithm() == load_lesson(lessons[1]).algorithm);
+  REQUIRE(session.model(0));
+  CHECK(&session.model(0)->algorithm() == load_lesson(lessons[1]).algorithm);
   host.press(ImGuiKey_RightArrow);
   host.render(2);
-  CHECK(&app.model(0)->algorithm() == load_lesson(lessons[2]).algorithm);
+  CHECK(&session.model(0)->algorithm() == load_lesson(lessons[2]).algorithm);
   host.press(ImGuiKey_LeftArrow);
   host.render(2);
   ImGui::GetIO().KeyCtrl = false;
-  CHECK(&app.model(0)->algorithm() == load_lesson(lessons[1]).algorithm);
-  CHECK(app.step() == load_lesson(lessons[1]).start_step);  // Ctrl+arrows do not step
-  CHECK(app.open_adjacent_lesson(-1));
-  CHECK_FALSE(app.open_adjacent_lesson(-1));  // before the first: nothing
-  CHECK(&app.model(0)->algorithm() == load_lesson(lessons[0]).algorithm);
+  CHECK(&session.model(0)->algorithm() == load_lesson(lessons[1]).algorithm);
+  CHECK(session.step() == load_lesson(lessons[1]).start_step);  // Ctrl+arrows do not step
+  CHECK(session.open_adjacent_lesson(-1));
+  CHECK_FALSE(session.open_adjacent_lesson(-1));  // before the first: nothing
+  CHECK(&session.model(0)->algorithm() == load_lesson(lessons[0]).algorithm);
 }
 
 TEST_CASE("visualizer classroom: stepping off-screen pans the canvas to the step and keeps the zoom", "[visualizer][classroom]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[300,70]})", "t"), Numeric::exact));
-  const TraceModel& m = *app.model(0);
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[300,70]})", "t"), Numeric::exact));
+  const TraceModel& m = *session.model(0);
   REQUIRE(m.plots().size() > 200);
   const PlotEvent start = m.plots().front(), end_plot = m.plots().back();
   app.jump_and_focus(start.step);
@@ -154,7 +157,7 @@ TEST_CASE("visualizer classroom: stepping off-screen pans the canvas to the step
   REQUIRE_FALSE(app.canvas(0)->cell_rect(end));  // 300 cells away: off the canvas
   host.press(ImGuiKey_End);
   host.render(2);
-  REQUIRE(app.step() == m.last());
+  REQUIRE(session.step() == m.last());
   const auto now = app.canvas(0)->cell_rect(end);
   REQUIRE(now);
   CHECK((*now)[2] - (*now)[0] == Approx(cell));
@@ -179,23 +182,24 @@ TEST_CASE("visualizer classroom: stepping to a hit off the 3D canvas looks at it
           "[visualizer][classroom][rays]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("ray-sphere-geometric"),
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("ray-sphere-geometric"),
                              parse_json_text(find_algorithm("ray-sphere-geometric").example, "example"), Numeric::f64));
-  REQUIRE(app.set_view(View::orbit3d));
-  const TraceModel& m = *app.model(0);
+  REQUIRE(session.set_view(View::orbit3d));
+  const TraceModel& m = *session.model(0);
   std::optional<std::pair<std::size_t, V3>> hit;  // the first step that records a point
   for (std::size_t s = 0; s < m.size() && !hit; ++s)
     for (std::uint32_t g = m.trace().at(s).geo_begin; g < m.trace().at(s).geo_end && !hit; ++g)
       if (m.trace().geo_at(g).kind == GeoKind::point3 && s > 0) hit = {s, item_of(m.trace(), g).at(0)};
   REQUIRE(hit);
-  app.set_step(0);
+  session.set_step(0);
   host.render(2);
   const auto* c = dynamic_cast<const OrbitCanvas*>(app.canvas(0));
   REQUIRE(c);
   for (int k = 0; k < 40 && c->screen_of(hit->second); ++k) host.press(ImGuiKey_PageUp), host.render(1);  // zoom in
   REQUIRE_FALSE(c->screen_of(hit->second));
   const double dist = c->camera().dist;
-  app.set_step(hit->first);
+  session.set_step(hit->first);
   host.render(2);
   CHECK(c->screen_of(hit->second));
   CHECK(c->camera().dist == dist);
@@ -204,14 +208,15 @@ TEST_CASE("visualizer classroom: stepping to a hit off the 3D canvas looks at it
 TEST_CASE("visualizer classroom: the 3D view's labels never overlap", "[visualizer][classroom][rays]") {
   HeadlessHost host(1024, 640);
   App& app = host.app();
+  Session& session = app.session();
   std::size_t labels = 0, steps = 0;
   for (const char* name : {"05-triangle-crack.md", "06-far-sphere.md", "18-kd-ray-mesh.md"}) {
-    REQUIRE(app.open_lesson(default_lessons_dir() / name));
-    REQUIRE(app.set_view(View::orbit3d));
+    REQUIRE(session.open_lesson(default_lessons_dir() / name));
+    REQUIRE(session.set_view(View::orbit3d));
     const std::size_t first = name[1] == '8' ? 70185 : 0;  // lesson 18: the traversal after its build
-    const std::size_t last = app.steps() - 1, stride = std::max<std::size_t>(1, (last - first) / 40);
+    const std::size_t last = session.steps() - 1, stride = std::max<std::size_t>(1, (last - first) / 40);
     for (std::size_t s = first; s <= last; s += stride) {
-      app.set_step(s);
+      session.set_step(s);
       host.render(2);
       const auto* c = dynamic_cast<const OrbitCanvas*>(app.canvas(0));
       REQUIRE(c);

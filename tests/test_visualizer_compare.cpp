@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include "compare_plot.hpp"
-#include "headless.hpp"
-#include "theme.hpp"
+#include "panels/compare_plot.hpp"
+#include "headless/headless.hpp"
+#include "panels/theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -45,10 +45,11 @@ int edges_with(const HeadlessHost& host, const std::array<float, 4>& r, std::uin
 TEST_CASE("visualizer compare: lesson 04's mismatched cells and divergent steps", "[visualizer][compare]") {
   HeadlessHost host(1280, 800);
   App& app = host.app();
-  REQUIRE(app.open_lesson(kLesson04));
-  const TraceModel &a = *app.model(0), &b = *app.model(1);
-  REQUIRE(app.compare_stats());
-  const CompareStats& st = *app.compare_stats();
+  Session& session = app.session();
+  REQUIRE(session.open_lesson(kLesson04));
+  const TraceModel &a = *session.model(0), &b = *session.model(1);
+  REQUIRE(session.compare_stats());
+  const CompareStats& st = *session.compare_stats();
   // The cells one run plotted and the other never did, from the models' own cell lookups.
   std::set<Pixel> expected;
   for (const TraceModel* m : {&a, &b})
@@ -74,14 +75,15 @@ TEST_CASE("visualizer compare: lesson 04's mismatched cells and divergent steps"
 TEST_CASE("visualizer compare: mismatched pixels are outlined on both canvases, others are not", "[visualizer][compare]") {
   HeadlessHost host(1280, 800);
   App& app = host.app();
-  REQUIRE(app.open_lesson(kLesson04));  // zoomed onto step 3939, the first divergence
-  const TraceModel& a = *app.model(0);
+  Session& session = app.session();
+  REQUIRE(session.open_lesson(kLesson04));  // zoomed onto step 3939, the first divergence
+  const TraceModel& a = *session.model(0);
   // Just past the last divergence: every mismatch is plotted and, as the view follows the step,
   // still on the canvas.
-  const std::size_t shown = app.compare_stats()->divergences.back() + 2;
-  app.set_step(shown);
+  const std::size_t shown = session.compare_stats()->divergences.back() + 2;
+  session.set_step(shown);
   host.render();
-  const auto& cells = app.compare_stats()->mismatched_cells;
+  const auto& cells = session.compare_stats()->mismatched_cells;
   const std::set<Pixel> marked(cells.begin(), cells.end());
   const auto current = a.pixel_at(shown);
   auto off_current = [&](Pixel c) { return !current || std::abs(current->x - c.x) > 1 || std::abs(current->y - c.y) > 1; };
@@ -117,7 +119,7 @@ TEST_CASE("visualizer compare: mismatched pixels are outlined on both canvases, 
 TEST_CASE("visualizer compare: F fits both canvases", "[visualizer][compare]") {
   HeadlessHost host(1280, 800);
   App& app = host.app();
-  REQUIRE(app.open_lesson(kLesson04));
+  REQUIRE(app.session().open_lesson(kLesson04));
   host.render();
   const Pixel at{1968, 656};  // step 3939's cell, where the lesson zooms in
   std::array<float, 2> before{};
@@ -141,9 +143,10 @@ TEST_CASE("visualizer compare: F fits both canvases", "[visualizer][compare]") {
 TEST_CASE("visualizer compare: the |difference| series and the decimal of exact fractions", "[visualizer][compare]") {
   HeadlessHost host(1280, 800);
   App& app = host.app();
-  REQUIRE(app.open_lesson(kLesson04));
+  Session& session = app.session();
+  REQUIRE(session.open_lesson(kLesson04));
   host.render();
-  const TraceModel &a = *app.model(0), &b = *app.model(1);
+  const TraceModel &a = *session.model(0), &b = *session.model(1);
   const auto vars = shared_numeric_vars(a, b);
   REQUIRE(std::find(vars.begin(), vars.end(), "qy") != vars.end());
   CHECK(std::find(vars.begin(), vars.end(), "i") == vars.end());  // an integer counter

@@ -7,12 +7,12 @@
 #include <unistd.h>
 #include <set>
 #include <random>
-#include "compare.hpp"
+#include "lessons/compare.hpp"
 #include "fill_oracle.hpp"
-#include "lesson.hpp"
-#include "pixel_layer.hpp"
+#include "lessons/lesson.hpp"
+#include "panels/pixel_layer.hpp"
 #include "spatial/ray_triangles.hpp"
-#include "trace_model.hpp"
+#include "lessons/trace_model.hpp"
 
 using namespace sw;
 using namespace sw::vis;

@@ -3,9 +3,9 @@
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include <cmath>
-#include "headless.hpp"
-#include "orbit_canvas.hpp"
-#include "theme.hpp"
+#include "headless/headless.hpp"
+#include "panels/orbit_canvas.hpp"
+#include "panels/theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -60,10 +60,10 @@ TEST_CASE("visualizer rays: the ray lessons load into the 3D canvas", "[visualiz
     if (l.algorithm->family != "rays" && l.algorithm->id != "ray-triangles") continue;  // ray tests, alone or in a loop
     ++rays;
     INFO(path);
-    REQUIRE(host.app().open_lesson(path));
+    REQUIRE(host.app().session().open_lesson(path));
     host.render();
     CHECK(dynamic_cast<const OrbitCanvas*>(host.app().canvas(0)));
-    CHECK(host.app().highlighted_line() == host.app().model(0)->trace().at(host.app().step()).line);
+    CHECK(host.app().highlighted_line() == host.app().session().model(0)->trace().at(host.app().session().step()).line);
   }
   CHECK(rays >= 2);
 }
@@ -71,15 +71,16 @@ TEST_CASE("visualizer rays: the ray lessons load into the 3D canvas", "[visualiz
 TEST_CASE("visualizer rays: the hit marker is at the hit point on the hit step only", "[visualizer][rays]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
+  Session& session = app.session();
   // Opens the lesson, checks the marker on the exact run's hit step and its absence one step
   // earlier; returns the hit point (rendered at the hit step) for further checks.
   auto marker_only_on_hit_step = [&](const char* lesson) {
-    REQUIRE(app.open_lesson(default_lessons_dir() / lesson));
-    const auto [step, p] = hit_of(*app.model(0));
-    app.set_step(step - 1);
+    REQUIRE(session.open_lesson(default_lessons_dir() / lesson));
+    const auto [step, p] = hit_of(*session.model(0));
+    session.set_step(step - 1);
     host.render();
     CHECK(near_colour(host, *ray_canvas(app, 0).screen_of(p), kHitColour) == 0);
-    app.set_step(step);
+    session.set_step(step);
     host.render();
     const auto at = ray_canvas(app, 0).screen_of(p);
     REQUIRE(at);
@@ -122,11 +123,12 @@ TEST_CASE("visualizer rays: handle_edit3 moves the declared o or o + d", "[visua
 TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the relative position", "[visualizer][rays]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
+  Session& session = app.session();
   const Algorithm& alg = find_algorithm("ray-box");
-  REQUIRE(app.open_algorithm(alg, parse_json_text(R"({"ray":{"o":[-3,0.5,0.5],"d":[1,0.25,0.125]},"box":{"min":[0,0,0],"max":[1,1,1]}})", "t"), Numeric::exact));
+  REQUIRE(session.open_algorithm(alg, parse_json_text(R"({"ray":{"o":[-3,0.5,0.5],"d":[1,0.25,0.125]},"box":{"min":[0,0,0],"max":[1,1,1]}})", "t"), Numeric::exact));
   host.render();
-  app.set_step(app.steps() - 1);
-  const Json before = app.model(0)->input();
+  session.set_step(session.steps() - 1);
+  const Json before = session.model(0)->input();
   const V3 o{-3, 0.5, 0.5}, tip{-2, 0.75, 0.625};
   const auto at = ray_canvas(app, 0).screen_of(tip);
   REQUIRE(at);
@@ -141,7 +143,7 @@ TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the re
   }
   host.set_mouse(ImVec2(start.x + 24, start.y - 20), false);
   host.render(1);
-  const TraceModel& m = *app.model(0);
+  const TraceModel& m = *session.model(0);
   CHECK(m.input()["ray"]["o"] == before["ray"]["o"]);
   CHECK(m.input()["ray"]["d"] != before["ray"]["d"]);
   CHECK(m.input()["box"] == before["box"]);
@@ -149,7 +151,7 @@ TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the re
   const Scene3 sc = Scene3::from_model(m, {});
   REQUIRE(sc.first_ray);
   CHECK(Json::array({sc.first_ray->second.x, sc.first_ray->second.y, sc.first_ray->second.z}) == m.input()["ray"]["d"]);
-  CHECK(app.step() == m.last());  // it was at the end, and stays at the end
+  CHECK(session.step() == m.last());  // it was at the end, and stays at the end
   // The o handle is still where the input says.
   const auto o_at = ray_canvas(app, 0).screen_of(o);
   REQUIRE(o_at);
@@ -169,7 +171,7 @@ TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the re
   host.set_mouse(ImVec2(empty.x + 40, empty.y), false);
   host.render(1);
   CHECK(ray_canvas(app, 0).camera().yaw != yaw);
-  CHECK(app.model(0)->input() == edited);
+  CHECK(session.model(0)->input() == edited);
 }
 
 TEST_CASE("visualizer rays: the GLM orbit camera is a pinhole camera in doubles", "[visualizer][rays]") {

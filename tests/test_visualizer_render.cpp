@@ -7,8 +7,8 @@
 #include <fstream>
 #include <set>
 #include <unistd.h>
-#include "headless.hpp"
-#include "pixel_layer.hpp"
+#include "headless/headless.hpp"
+#include "panels/pixel_layer.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -65,11 +65,12 @@ void check_canvas(HeadlessHost& host, const TraceModel& m, std::size_t step, int
 TEST_CASE("visualizer render: plotted pixels and the listing line at known steps", "[visualizer][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
+  Session& session = app.session();
   const Algorithm& alg = find_algorithm("dda-line");
-  REQUIRE(app.open_algorithm(alg, parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"), Numeric::exact));
-  const TraceModel& m = *app.model(0);
+  REQUIRE(session.open_algorithm(alg, parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"), Numeric::exact));
+  const TraceModel& m = *session.model(0);
   for (std::size_t step : {std::size_t(0), std::size_t(5), std::size_t(12), m.last()}) {
-    app.set_step(step);
+    session.set_step(step);
     host.render();
     INFO("step " << step);
     CHECK(app.highlighted_line() == m.trace().at(step).line);
@@ -80,12 +81,13 @@ TEST_CASE("visualizer render: plotted pixels and the listing line at known steps
 TEST_CASE("visualizer render: the drawn highlight band is on the step's listing line and no other", "[visualizer][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"), Numeric::exact));
-  const TraceModel& m = *app.model(0);
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"), Numeric::exact));
+  const TraceModel& m = *session.model(0);
   auto blue = [](std::uint32_t c) { return int((c >> 16) & 255) - int(c & 255); };  // RGBA in memory: blue minus red
   std::set<std::uint32_t> lines_seen;
   for (std::size_t step = 0; step <= m.last(); ++step) {
-    app.set_step(step);
+    session.set_step(step);
     host.render();
     host.render();  // the listing scrolls to the line on the frame after
     const std::uint32_t line = m.trace().at(step).line;
@@ -107,33 +109,35 @@ TEST_CASE("visualizer render: the drawn highlight band is on the step's listing 
 TEST_CASE("visualizer render: the grid walk's corner case and the compare view", "[visualizer][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-grid-walk"), parse_json_text(R"({"p0":[0,3.75],"p1":[8,-0.25]})", "t"),
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("dda-grid-walk"), parse_json_text(R"({"p0":[0,3.75],"p1":[8,-0.25]})", "t"),
                              Numeric::exact, Numeric::f32));
-  const TraceModel &a = *app.model(0), &b = *app.model(1);
-  app.set_step(6);  // both cells of the first corner crossing are visited
+  const TraceModel &a = *session.model(0), &b = *session.model(1);
+  session.set_step(6);  // both cells of the first corner crossing are visited
   host.render();
   CHECK(app.highlighted_line() == 10);
   check_canvas(host, a, 6, 0, false);
   check_canvas(host, b, 6, 1, false);
-  REQUIRE(app.compare_stats());
-  CHECK_FALSE(app.compare_stats()->first_decision_divergence);  // this input is exact in float too
+  REQUIRE(session.compare_stats());
+  CHECK_FALSE(session.compare_stats()->first_decision_divergence);  // this input is exact in float too
 }
 
 TEST_CASE("visualizer render: a lesson that fails to load shows its error, never crashes", "[visualizer][render]") {
   HeadlessHost host(640, 400);
   App& app = host.app();
+  Session& session = app.session();
   const auto dir = std::filesystem::temp_directory_path() / ("sw-vis-bad-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto bad = dir / "bad.md";
   std::ofstream(bad) << "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0]}\n---\n";
-  CHECK_FALSE(app.open_lesson(bad));
-  CHECK_THAT(app.error(), Catch::Contains("bad.md") && Catch::Contains("p1"));
-  CHECK_FALSE(app.loaded());
+  CHECK_FALSE(session.open_lesson(bad));
+  CHECK_THAT(session.error(), Catch::Contains("bad.md") && Catch::Contains("p1"));
+  CHECK_FALSE(session.loaded());
   host.render();  // draws the message
   // A good lesson still opens afterwards, and a failing one then keeps it open.
-  REQUIRE(app.open_first_lesson());
-  CHECK_FALSE(app.open_lesson(dir / "missing.md"));
-  CHECK(app.loaded());
+  REQUIRE(session.open_first_lesson());
+  CHECK_FALSE(session.open_lesson(dir / "missing.md"));
+  CHECK(session.loaded());
   host.render();
   std::filesystem::remove_all(dir);
 }
@@ -141,10 +145,11 @@ TEST_CASE("visualizer render: a lesson that fails to load shows its error, never
 TEST_CASE("visualizer render: dragging p1 re-runs the trace and keeps the relative position", "[visualizer][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1,2],"p1":[13,7]})", "t"), Numeric::exact));
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1,2],"p1":[13,7]})", "t"), Numeric::exact));
   host.render();
-  const std::size_t before_steps = app.steps();
-  app.set_step(before_steps / 2);
+  const std::size_t before_steps = session.steps();
+  session.set_step(before_steps / 2);
   host.render();
   // The world-to-screen map from the rectangle of cell (1, 2), whose centre is the point (1, 2).
   const auto c0 = app.canvas(0)->cell_rect({1, 2});
@@ -161,10 +166,10 @@ TEST_CASE("visualizer render: dragging p1 re-runs the trace and keeps the relati
   }
   host.set_mouse(screen(21, 11), false);
   host.render(1);
-  const TraceModel& m = *app.model(0);
+  const TraceModel& m = *session.model(0);
   CHECK(m.input()["p1"] == Json::array({21, 11}));
-  CHECK(app.steps() > before_steps);
-  const double before = double(before_steps / 2) / double(before_steps - 1), after = double(app.step()) / double(app.steps() - 1);
+  CHECK(session.steps() > before_steps);
+  const double before = double(before_steps / 2) / double(before_steps - 1), after = double(session.step()) / double(session.steps() - 1);
   CHECK(std::fabs(before - after) < 0.02);
 }
 #endif  // SW_HAVE_VISUALIZER
@@ -173,35 +178,36 @@ TEST_CASE("visualizer render: dragging p1 re-runs the trace and keeps the relati
 TEST_CASE("visualizer render: the timeline keys step, play, jump and change speed", "[visualizer][render]") {
   HeadlessHost host(640, 400);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[30,7]})", "t"), Numeric::exact));
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0,0],"p1":[30,7]})", "t"), Numeric::exact));
   host.render();
-  REQUIRE(app.step() == 0);
+  REQUIRE(session.step() == 0);
   host.press(ImGuiKey_RightArrow);
   host.render();
-  CHECK(app.step() == 1);
+  CHECK(session.step() == 1);
   host.press(ImGuiKey_End);
   host.render();
-  CHECK(app.step() == app.steps() - 1);
+  CHECK(session.step() == session.steps() - 1);
   host.press(ImGuiKey_LeftArrow);
   host.render();
-  CHECK(app.step() == app.steps() - 2);
+  CHECK(session.step() == session.steps() - 2);
   host.press(ImGuiKey_Home);
   host.render();
-  CHECK(app.step() == 0);
+  CHECK(session.step() == 0);
   // Space plays at the current speed (4 steps/s at 60 frames/s: a step every 15 frames); '+'
   // doubles it.
   host.press(ImGuiKey_Space);
   host.render(31);
-  const std::size_t slow = app.step();
+  const std::size_t slow = session.step();
   CHECK(slow >= 1);
   host.type('+');
   host.type('+');
   host.render(31);
-  CHECK(app.step() - slow > slow);
+  CHECK(session.step() - slow > slow);
   host.press(ImGuiKey_Space);  // pause
   host.render();
-  const std::size_t paused = app.step();
+  const std::size_t paused = session.step();
   host.render(30);
-  CHECK(app.step() == paused);
+  CHECK(session.step() == paused);
 }
 #endif  // SW_HAVE_VISUALIZER

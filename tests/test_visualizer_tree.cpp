@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 #include <set>
-#include "headless.hpp"
-#include "tree_view.hpp"
+#include "headless/headless.hpp"
+#include "panels/tree_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -99,9 +99,10 @@ TEST_CASE("tree view: 10^4 nodes fit the canvas and draw headless (past 65536 ve
   for (int i = 0; i < 12000; ++i) pts.push_back({u(rng), u(rng)});
   HeadlessHost host(1280, 800);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("kd-build"), Json{{"points", pts}}, Numeric::f64));
-  REQUIRE(app.set_view(View::tree));
-  app.set_step(app.model(0)->last());
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("kd-build"), Json{{"points", pts}}, Numeric::f64));
+  REQUIRE(session.set_view(View::tree));
+  session.set_step(session.model(0)->last());
   host.render();
   const auto* tc = dynamic_cast<const TreeCanvas*>(app.canvas(0));
   REQUIRE(tc);

@@ -6,13 +6,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "cli_harness.hpp"
-#include "headless.hpp"
-#include "image_view.hpp"
+#include "headless/headless.hpp"
+#include "panels/image_view.hpp"
 #include "lighting_oracle.hpp"
-#include "outline_layer.hpp"
-#include "plot_view.hpp"
+#include "panels/outline_layer.hpp"
+#include "panels/plot_view.hpp"
 #include "rays_oracle.hpp"
-#include "table_view.hpp"
+#include "panels/table_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -81,12 +81,13 @@ TEST_CASE("views table: poly-horner has one row per column and circle-midpoint o
 TEST_CASE("views table: the highlighted row follows the step, is drawn highlighted, and a click jumps to its step", "[visualizer][views][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("poly-forward-diff"), parse_json_text(R"({"coeffs":[1,-3,0,5],"xs":-40,"xe":40})", "t"), Numeric::f32));
-  REQUIRE(app.set_view(View::table));
-  CHECK_FALSE(app.set_view(View::image));  // not declared
-  const TraceModel& m = *app.model(0);
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("poly-forward-diff"), parse_json_text(R"({"coeffs":[1,-3,0,5],"xs":-40,"xe":40})", "t"), Numeric::f32));
+  REQUIRE(session.set_view(View::table));
+  CHECK_FALSE(session.set_view(View::image));  // not declared
+  const TraceModel& m = *session.model(0);
   for (std::size_t step : {std::size_t(0), std::size_t(4), std::size_t(5), std::size_t(77), std::size_t(150), m.last()}) {
-    app.set_step(step);
+    session.set_step(step);
     host.render();
     const auto* tc = dynamic_cast<const TableCanvas*>(app.canvas(0));
     REQUIRE(tc);
@@ -101,7 +102,7 @@ TEST_CASE("views table: the highlighted row follows the step, is drawn highlight
       if (const auto o = tc->row_rect(other)) CHECK(std::abs(row_blueness(host, *o)) < 25);
   }
   // A click on another drawn row goes to that row's first step.
-  app.set_step(60);
+  session.set_step(60);
   host.render();
   const auto* tc = dynamic_cast<const TableCanvas*>(app.canvas(0));
   const std::size_t target = *tc->highlighted_row() + 2;
@@ -112,8 +113,8 @@ TEST_CASE("views table: the highlighted row follows the step, is drawn highlight
   host.render(1);
   host.set_mouse(at, false);
   host.render(1);
-  CHECK(app.step() == tc->table().rows[target]);
-  CHECK(app.view() == View::table);
+  CHECK(session.step() == tc->table().rows[target]);
+  CHECK(session.view() == View::table);
 }
 
 TEST_CASE("views plot: table_values holds every cell of table_row, carried values included", "[visualizer][views]") {
@@ -140,13 +141,14 @@ TEST_CASE("views plot: table_values holds every cell of table_row, carried value
 TEST_CASE("views plot: a float difference table's drift against exact, plotted and clickable", "[visualizer][views][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_lesson(std::filesystem::path(SW_SOURCE_DIR) / "lessons/08-forward-difference-drift.md"));
-  REQUIRE(app.set_view(View::plot));
+  Session& session = app.session();
+  REQUIRE(session.open_lesson(std::filesystem::path(SW_SOURCE_DIR) / "lessons/08-forward-difference-drift.md"));
+  REQUIRE(session.set_view(View::plot));
   host.render(3);
   const auto* pc = dynamic_cast<const PlotCanvas*>(app.canvas(0));
   REQUIRE(pc);
   REQUIRE(pc->difference());
-  const TraceModel &f = *app.model(0), &e = *app.model(1);  // the lesson: float, compared with exact
+  const TraceModel &f = *session.model(0), &e = *session.model(1);  // the lesson: float, compared with exact
   REQUIRE(f.numeric() == Numeric::f32);
   REQUIRE(e.numeric() == Numeric::exact);
   const StepTable t = build_step_table(f);
@@ -157,7 +159,7 @@ TEST_CASE("views plot: a float difference table's drift against exact, plotted a
   REQUIRE(pc->exact() == ev[y]);
   CHECK(std::fabs(fv[y].back() - ev[y].back()) > 0.01);  // float's y has drifted by the end
   // The current row's marker is drawn where the row is.
-  const std::size_t row = *t.row_of(app.step());
+  const std::size_t row = *t.row_of(session.step());
   const int x = int(std::lround(pc->row_x(row)));
   auto yellow = [&](int px, int py) {
     const std::uint32_t c = host.pixel(px, py);
@@ -177,7 +179,7 @@ TEST_CASE("views plot: a float difference table's drift against exact, plotted a
   host.render(1);
   host.set_mouse(ImVec2(mx, 300), false);
   host.render(1);
-  CHECK(app.step() == t.rows[target]);
+  CHECK(session.step() == t.rows[target]);
   CHECK(target >= 38);
   CHECK(target <= 40);
 }
@@ -256,10 +258,11 @@ TEST_CASE("views image: a float ray-triangle sweep disagrees with exact exactly 
 TEST_CASE("views image: the headless render paints hits, misses and each disagreement in its colour", "[visualizer][views][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("ray-triangle-mt"), parse_json_text(kEdgeRay, "t"), Numeric::f32));
-  REQUIRE(app.set_view(View::image));
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(find_algorithm("ray-triangle-mt"), parse_json_text(kEdgeRay, "t"), Numeric::f32));
+  REQUIRE(session.set_view(View::image));
   host.render(3);
-  app.jump_and_focus(app.steps() - 1);
+  app.jump_and_focus(session.steps() - 1);
   host.render(2);
   const auto* ic = dynamic_cast<const ImageCanvas*>(app.canvas(0));
   REQUIRE(ic);
@@ -299,26 +302,26 @@ TEST_CASE("views image: the headless render paints hits, misses and each disagre
   const auto r = ic->sample_rect(g.w / 4, g.h / 2);
   const ImVec2 at(std::floor((r[0] + r[2]) / 2), std::floor((r[1] + r[3]) / 2));
   const int i = int((at.x - ic->sample_rect(0, 0)[0]) / (r[2] - r[0])), j = int((at.y - ic->sample_rect(0, 0)[1]) / (r[3] - r[1]));
-  const Json expected = app.model(0)->run().sweep_sample(g, i, j);
+  const Json expected = session.model(0)->run().sweep_sample(g, i, j);
   host.set_mouse(at, true);
   host.render(1);
   host.set_mouse(at, false);
   host.render(1);
-  CHECK(app.model(0)->input() == expected);
-  CHECK(app.view() == View::image);
+  CHECK(session.model(0)->input() == expected);
+  CHECK(session.view() == View::image);
   // V shows the next declared view, and after the last the first.
   host.type('v');
   host.render(2);
-  CHECK(app.view() == View::orbit3d);
+  CHECK(session.view() == View::orbit3d);
   host.type('v');
   host.render(2);
-  CHECK(app.view() == View::image);
+  CHECK(session.view() == View::image);
 }
 
 TEST_CASE("views plane2d: the exact curve is drawn over the pixels of implicit-curve", "[visualizer][views][render]") {
   HeadlessHost host(kW, kH);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(find_algorithm("implicit-curve"), parse_json_text(R"({"P":[[1,2,0],[1,0,2],[-100,0,0]],"start":[-10,0],"max_steps":200})", "t"),
+  REQUIRE(app.session().open_algorithm(find_algorithm("implicit-curve"), parse_json_text(R"({"P":[[1,2,0],[1,0,2],[-100,0,0]],"start":[-10,0],"max_steps":200})", "t"),
                              Numeric::exact));
   host.render(3);
   const auto c00 = app.canvas(0)->cell_rect({0, 0});

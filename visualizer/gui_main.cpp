@@ -15,9 +15,9 @@
 #include <iostream>
 #include <random>
 #include <sstream>
-#include "app.hpp"
-#include "gl_texture.hpp"
-#include "image_io.hpp"
+#include "panels/app.hpp"
+#include "headless/gl_texture.hpp"
+#include "headless/image_io.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -35,30 +35,30 @@ struct Options {
 };
 
 // Opens what the options ask for; failures show in the app (and are returned for the exit code).
-bool open(App& app, const Options& o) {
+bool open(Session& session, const Options& o) {
   if (o.bench_scrub) {
     // 499 997 pixels: 1 000 001 steps of the DDA line.
-    return app.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0.5,0.25],"p1":[499997.5,123456.25]})", "bench"), Numeric::f64);
+    return session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0.5,0.25],"p1":[499997.5,123456.25]})", "bench"), Numeric::f64);
   }
   if (o.algorithm.empty()) {
-    if (!(o.lesson.empty() ? app.open_first_lesson() : app.open_lesson(o.lesson))) return false;
+    if (!(o.lesson.empty() ? session.open_first_lesson() : session.open_lesson(o.lesson))) return false;
   }
   if (!o.algorithm.empty() || !o.numeric.empty() || !o.compare.empty()) {
     try {
       // --algorithm with its --input (or example); or the lesson's run in other number types.
-      const TraceModel* m = app.model(0);
+      const TraceModel* m = session.model(0);
       const Algorithm& alg = !o.algorithm.empty() || !m ? find_algorithm(o.algorithm.empty() ? "dda-line" : o.algorithm) : m->algorithm();
       const Json input = !o.input.empty() ? read_input_arg(o.input) : m && &m->algorithm() == &alg ? m->input() : parse_json_text(alg.example, "example");
       const Numeric n = !o.numeric.empty() ? parse_numeric_for(alg, o.numeric) : m && &m->algorithm() == &alg ? m->numeric() : parse_numeric_for(alg, "double");
       Comparison cmp;
       if (!o.compare.empty()) cmp = parse_comparison(alg, o.compare, n);
-      if (!app.open_algorithm(alg, input, n, cmp)) return false;
+      if (!session.open_algorithm(alg, input, n, cmp)) return false;
     } catch (const InputError& e) {
-      app.show_error(e.what());
+      session.show_error(e.what());
       return false;
     }
   }
-  if (o.step) app.set_step(*o.step);
+  if (o.step) session.set_step(*o.step);
   return true;
 }
 
@@ -127,10 +127,11 @@ int main(int argc, char** argv) {
   {
     GlTextureHost textures;
     App app(textures, fonts);
-    app.set_budget(o.budget);
+    Session& session = app.session();
+    session.set_budget(o.budget);
     app.set_presenting(o.present);
-    const bool loaded = open(app, o);
-    if (!loaded) std::cerr << "stepwise-gui: could not load: " << app.error() << '\n', status = 2;
+    const bool loaded = open(session, o);
+    if (!loaded) std::cerr << "stepwise-gui: could not load: " << session.error() << '\n', status = 2;
     std::mt19937_64 rng(7);
     const int total = o.bench_scrub ? o.bench_scrub + 1 : o.frames;
     Clock::time_point t_bench;
@@ -143,7 +144,7 @@ int main(int argc, char** argv) {
     int settle = 3;
     for (int frame = 0; !glfwWindowShouldClose(window) && (total == 0 || frame < total); ++frame) {
       if (o.bench_scrub && frame == 1) t_bench = Clock::now();
-      if (o.bench_scrub && app.steps()) app.set_step(rng() % app.steps());
+      if (o.bench_scrub && session.steps()) session.set_step(rng() % session.steps());
       if (timed || app.animating() || ImGui::IsAnyMouseDown() || settle > 0) {
         glfwPollEvents();
         --settle;
@@ -184,7 +185,7 @@ int main(int argc, char** argv) {
         glFinish();
         const auto ms = [](auto d) { return std::chrono::duration<double, std::milli>(d).count(); };
         std::cerr << "stepwise-gui: first frame " << ms(Clock::now() - t_start) << " ms after start, " << ms(Clock::now() - t_window)
-                  << " ms after the window opened (" << ms(t_window - t_start) << " ms for GLFW and the GL context); " << app.steps()
+                  << " ms after the window opened (" << ms(t_window - t_start) << " ms for GLFW and the GL context); " << session.steps()
                   << " steps\n";
       }
     }
@@ -192,7 +193,7 @@ int main(int argc, char** argv) {
       glFinish();
       const double s = std::chrono::duration<double>(Clock::now() - t_bench).count();
       std::printf("bench-scrub: %d frames jumping to random steps of a %zu-step trace: %.1f fps (%.2f ms/frame)\n", o.bench_scrub,
-                  app.steps(), o.bench_scrub / s, 1000 * s / o.bench_scrub);
+                  session.steps(), o.bench_scrub / s, 1000 * s / o.bench_scrub);
     }
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -186,11 +186,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     const Num wr = Num(m.kr + m.kt * tr.fresnel), wt = Num(m.kt * Num(Num(1) - tr.fresnel));
     if (plan_.reflection[mi]) {
       const Vec3<Num> dir = r.d - Num(Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
-      if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror");
+      if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror").value(wr);
       add(c, wr, weight, sf, here, dir, depth, counts_.reflection);
     }
     if (plan_.refraction[mi] && !tr.tir) {
-      if constexpr (Probe::on) probe_.step(L::transmit, StepKind::advance).num("wt", wt).ray(sf.p, tr.dir).label("T");
+      if constexpr (Probe::on) probe_.step(L::transmit, StepKind::advance).num("wt", wt).ray(sf.p, tr.dir).label("T").value(wt);
       add(c, wt, weight, sf, here, tr.dir, depth, counts_.refraction);
     }
     if constexpr (Probe::on) probe_.step(L::done, StepKind::done).colour("c", c);

@@ -155,7 +155,8 @@ std::vector<Param> model_params() {
 template <class A> struct ModelSpec {
   using Algo = A;
   static constexpr std::array hooks{Hook::error,      Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_shaded,
-                                    Hook::lobe,       Hook::params,  Hook::compare_group};
+                                    Hook::lobe,       Hook::params,  Hook::compare_group, Hook::result_keys};
+  static constexpr std::array result_keys{std::string_view("value")};  // the term: the lobe view's eye, the compare strip
   using Input = ModelInput;
   using Output = ModelOutput;
   static constexpr std::array views{View::orbit3d, View::image, View::lobe};

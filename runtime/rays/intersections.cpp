@@ -252,9 +252,11 @@ std::array<double, 3> sample_origin(const SweepFrame& f, const SweepGrid& g, int
 }
 
 template <class AlgoT, Prim P> struct RaySpec {
-  static constexpr std::array hooks{Hook::filters, Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_marker, Hook::error};
+  static constexpr std::array hooks{Hook::filters, Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_marker, Hook::error,
+                                    Hook::result_keys};
   using Algo = AlgoT;
   using Input = RayInput;
+  static constexpr std::array result_keys{std::string_view("hit")};  // output_json: always
   using Output = RayOutput;
   // The magnitude filter, then intervals for what it leaves uncertain (docs/rays/accuracy.md).
   using Filters = std::tuple<Mag, Interval>;

@@ -30,8 +30,9 @@ template <class Num> struct BrutePrepared {
 std::size_t brute_steps(std::size_t n) { return 15 * n + 2; }
 
 struct RayTrianglesSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::canonical, Hook::error};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::canonical, Hook::error, Hook::result_keys};
   using Algo = spatial::RayTriangles;
+  static constexpr std::array result_keys{std::string_view("hit")};  // hit_json: always
   using Input = BruteInput;
   using Output = spatial::HitOutput;
   static constexpr std::array views{View::orbit3d};

@@ -171,8 +171,9 @@ struct TraverseOutput {
 };
 
 struct BvhTraverseSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::step_cost, Hook::canonical, Hook::error};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::step_cost, Hook::canonical, Hook::error, Hook::result_keys};
   using Algo = spatial::BvhTraverse;
+  static constexpr std::array result_keys{std::string_view("hit")};  // hit_json: always
   using Input = BvhInput;
   using Output = TraverseOutput;
   static constexpr std::array views{View::orbit3d, View::tree};

@@ -28,8 +28,9 @@ template <class Num> struct TraversePrepared {
 std::size_t traverse_steps(std::size_t n) { return build_steps(n, 3) + 4 * kd_max_nodes(n) + 12 * 8 * n + 8; }
 
 struct KdTraverseSpec {
-  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::error, Hook::canonical};
+  static constexpr std::array hooks{Hook::handles, Hook::estimate_steps, Hook::error, Hook::canonical, Hook::result_keys};
   using Algo = spatial::KdTraverse;
+  static constexpr std::array result_keys{std::string_view("hit")};  // hit_json: always
   using Input = TraverseInput;
   using Output = HitOutput;
   static constexpr std::array views{View::tree, View::orbit3d};

@@ -2,9 +2,11 @@
 // traversal and tests, the shading, every shadow, mirror and transmitted ray with its depth) as
 // nested listings. Double only: the tracer's colours go through sqrt, pow and noise, and exact
 // rationals would grow without bound over the recursion. Semantics: docs/tracer/renderer.md.
+#include <cstdio>
 #include <memory>
 #include "register.hpp"
 #include "tracer/history.hpp"
+#include "tracer/ray_tree.hpp"
 
 namespace sw {
 namespace {
@@ -40,8 +42,49 @@ std::size_t history_steps(const HistoryInput& in) {
   return 16 + rays * per_ray;
 }
 
+// The scene view's picture: the scene through each pixel's centre, with the planner's decisions.
+Picture scene_picture(const HistoryInput& in, std::int64_t max_side) {
+  const tracer::Preview p = tracer::render_preview(in, max_side);
+  Picture pic{p.width, p.height, p.scale, p.rgb, p.seconds, "Planner", {}};
+  if (p.plan.all_effects) pic.notes.push_back({"All effects on (all_effects): nothing planned away.", "", std::nullopt});
+  for (const tracer::Decision& d : p.plan.decisions)
+    pic.notes.push_back({d.effect + " for " + d.subject + ": " + (d.on ? "on" : "off"), d.reason, d.on});
+  return pic;
+}
+
+// The ray tree (ray_tree.hpp) as the scene view's table: per ray its depth, kind, path weight,
+// the colour found there and its share of the pixel; the shares' sum, the pixel's colour.
+SummaryTable ray_tree_table(const HistoryInput& in, const TraceView& t) {
+  using Node = tracer::RayNode;
+  const std::vector<Node> tree = tracer::ray_tree(t, in.scene->lights);
+  SummaryTable table{"Ray tree", {"ray", "depth", "kind", "weight", "found", "share"}, {}, std::nullopt};
+  char buf[96];
+  auto share = [&](const std::array<double, 3>& c) {
+    std::snprintf(buf, sizeof buf, "%.3f %.3f %.3f", c[0], c[1], c[2]);
+    return SummaryTable::Cell{buf, c};
+  };
+  for (std::size_t k = 0; k < tree.size(); ++k) {
+    const Node& n = tree[k];
+    SummaryTable::Row row{n.step, n.end, {}};
+    row.cells.push_back({std::to_string(k), std::nullopt});
+    row.cells.push_back({std::to_string(n.depth), std::nullopt});
+    const bool shadow = n.kind == Node::Kind::shadow;
+    if (shadow) std::snprintf(buf, sizeof buf, "shadow %lld: %s", (long long)n.light, n.hit ? "blocked" : "lit");
+    else std::snprintf(buf, sizeof buf, "%s%s", std::string(tracer::kind_name(n.kind)).c_str(), n.hit ? "" : " (miss)");
+    row.cells.push_back({buf, std::nullopt});
+    std::snprintf(buf, sizeof buf, "%.4g", n.weight);
+    row.cells.push_back({buf, std::nullopt});
+    const bool found = !shadow && n.returned;
+    row.cells.push_back(found ? SummaryTable::Cell{"", n.local} : SummaryTable::Cell{});
+    row.cells.push_back(found ? share(n.added) : SummaryTable::Cell{});
+    table.rows.push_back(std::move(row));
+  }
+  table.total = SummaryTable::Row{0, 0, {{"sum", std::nullopt}, {}, {}, {}, {}, share(tracer::ray_tree_sum(tree))}};
+  return table;
+}
+
 struct WhittedSpec {
-  static constexpr std::array hooks{Hook::estimate_steps};
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::result_keys, Hook::picture, Hook::pick, Hook::summary_table};
   using Algo = tracer::Whitted;
   using Input = HistoryInput;
   using Output = WhittedOutput;
@@ -69,6 +112,11 @@ struct WhittedSpec {
   }
   static std::size_t ops(const Output&) { return 1; }
   static std::size_t estimate_steps(const Input& in) { return history_steps(in); }
+  static constexpr std::array result_keys{std::string_view("colour")};  // the scene view shows the pixel's colour
+  // The scene view: the picture, where a click traces the pixel clicked, and the ray tree.
+  static Picture picture(const Input& in, std::int64_t max_side) { return scene_picture(in, max_side); }
+  static constexpr std::string_view pick = "/pixel";
+  static SummaryTable summary_table(const Input& in, const TraceView& t) { return ray_tree_table(in, t); }
   // The renderer's own pixel, untraced (tests/tracer/test_pixel_history.cpp holds it to render()).
   static Output oracle(const Input& in) { return {tracer::pixel_colour(*tracer::history_scene(in), in.i, in.j)}; }
   static std::vector<BenchSet<Input>> bench_sets() {

@@ -6,9 +6,9 @@
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
 #include <cmath>
-#include "compare.hpp"
-#include "headless.hpp"
-#include "lobe_view.hpp"
+#include "lessons/compare.hpp"
+#include "headless/headless.hpp"
+#include "panels/lobe_view.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -141,13 +141,14 @@ TEST_CASE("two models: the comparison names a number type or a model of the grou
   // In the app: the right canvas runs Beckmann on Phong's vectors; Blinn-Phong carries the exponent too.
   HeadlessHost host(1280, 800);
   App& app = host.app();
-  REQUIRE(app.open_algorithm(phong, left, Numeric::f64, Comparison(Numeric::f64, &find_algorithm("blinn-phong"))));
-  REQUIRE(app.model(1));
-  CHECK(app.model(1)->algorithm().id == "blinn-phong");
-  CHECK(app.model(1)->input()["shininess"] == 7);
-  CHECK(app.model(1)->input()["e"] == left["e"]);
-  REQUIRE(app.open_algorithm(phong, left, Numeric::f64, Comparison(Numeric::f64, &find_algorithm("beckmann"))));
-  REQUIRE(app.set_view(View::lobe));
+  Session& session = app.session();
+  REQUIRE(session.open_algorithm(phong, left, Numeric::f64, Comparison(Numeric::f64, &find_algorithm("blinn-phong"))));
+  REQUIRE(session.model(1));
+  CHECK(session.model(1)->algorithm().id == "blinn-phong");
+  CHECK(session.model(1)->input()["shininess"] == 7);
+  CHECK(session.model(1)->input()["e"] == left["e"]);
+  REQUIRE(session.open_algorithm(phong, left, Numeric::f64, Comparison(Numeric::f64, &find_algorithm("beckmann"))));
+  REQUIRE(session.set_view(View::lobe));
   host.render(3);
   const auto* a = dynamic_cast<const LobeCanvas*>(app.canvas(0));
   const auto* b = dynamic_cast<const LobeCanvas*>(app.canvas(1));

@@ -1,0 +1,201 @@
+#include "headless/html_export.hpp"
+#include <stdlib.h>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include "headless/headless.hpp"
+#include "headless/html_page.hpp"
+#include "headless/image_io.hpp"
+#include "headless/render_command.hpp"
+
+namespace sw::vis {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Where the page goes. DIR may be new, an empty directory, or an earlier export (exactly
+// index.html and frames/), which is replaced; anything else is refused, so no one's files are lost.
+struct Target {
+  fs::path dir, parent;
+  bool exists = false, empty = false;
+};
+
+Target check_target(const std::string& arg) {
+  if (arg.empty()) throw InputError("--html: give the directory to write the page to");
+  Target t;
+  t.dir = fs::absolute(fs::path(arg)).lexically_normal();
+  if (!t.dir.has_filename()) t.dir = t.dir.parent_path();  // "pages/" and "pages/." name "pages"
+  if (t.dir == t.dir.root_path()) throw InputError("--html " + arg + ": refusing to write to the root directory");
+  t.parent = t.dir.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(t.parent, ec))
+    throw InputError("--html " + arg + ": the directory " + t.parent.string() + " does not exist");
+  const fs::file_status st = fs::symlink_status(t.dir, ec);
+  if (st.type() == fs::file_type::not_found) return t;
+  if (st.type() == fs::file_type::symlink) throw InputError("--html " + arg + " is a symbolic link; give the directory itself");
+  if (st.type() != fs::file_type::directory) throw InputError("--html " + arg + " exists and is not a directory");
+  t.exists = true;
+  std::size_t entries = 0;
+  bool ours = true;
+  for (fs::directory_iterator it(t.dir, ec), end; !ec && it != end && entries <= 2; it.increment(ec)) {
+    ++entries;
+    const std::string name = it->path().filename().string();
+    ours &= (name == "index.html" && it->is_regular_file()) || (name == "frames" && it->is_directory());
+  }
+  if (ec) throw InputError("--html " + arg + ": cannot read the directory (" + ec.message() + ")");
+  t.empty = entries == 0;
+  if (!t.empty && (!ours || entries != 2))
+    throw InputError("--html " + arg +
+                     " holds files other than an earlier export (index.html and frames/); refusing to replace it");
+  return t;
+}
+
+// A temporary sibling of DIR, removed unless committed.
+class TempDir {
+ public:
+  TempDir(const Target& t, const std::string& arg) {
+    std::string pattern = (t.parent / ("." + t.dir.filename().string() + ".tmp-XXXXXX")).string();
+    if (!::mkdtemp(pattern.data()))
+      throw InputError("--html " + arg + ": cannot write in " + t.parent.string() + " (" + std::strerror(errno) + ")");
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    if (!path_.empty()) fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+  // Moves the finished page to DIR: rename(2) replaces an empty directory; an earlier export is
+  // moved aside first and removed once the new page is in place.
+  void commit(const Target& t, const std::string& arg) {
+    std::error_code ec;
+    if (t.exists && !t.empty) {
+      const fs::path old = path_.string() + ".old";
+      fs::rename(t.dir, old, ec);
+      if (ec) throw InputError("--html " + arg + ": cannot move the earlier export aside (" + ec.message() + ")");
+      fs::rename(path_, t.dir, ec);
+      if (ec) {
+        std::error_code back;
+        fs::rename(old, t.dir, back);
+        throw InputError("--html " + arg + ": cannot move the page into place (" + ec.message() + ")");
+      }
+      fs::remove_all(old, ec);
+    } else {
+      fs::rename(path_, t.dir, ec);
+      if (ec) throw InputError("--html " + arg + ": cannot move the page into place (" + ec.message() + ")");
+    }
+    path_.clear();
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string frame_name(std::size_t step) {
+  std::array<char, 32> buf{};
+  std::snprintf(buf.data(), buf.size(), "frames/%04zu.png", step);
+  return buf.data();
+}
+
+Json listing_json(const Listing& listing, std::string title) {
+  Json lines = Json::array();
+  for (const ListingLine& l : listing.lines) lines.push_back({{"name", std::string(l.name)}, {"text", std::string(l.text)}});
+  return {{"title", std::move(title)}, {"lines", std::move(lines)}};
+}
+
+// The page data (docs/lesson-export.md): per step its frame, listing and line, kind and narration
+// (an index into the distinct narrations, each HTML from narrate's Markdown).
+Json page_data(const Lesson& lesson, const TraceModel& run, std::size_t from, std::size_t to, int w, int h) {
+  const Algorithm& alg = run.algorithm();
+  Json listings = Json::array({listing_json(alg.listing, std::string(alg.listing.title))});
+  std::array<int, 256> listing_of_scope;
+  listing_of_scope.fill(-1);
+  listing_of_scope[0] = 0;
+  std::map<std::string, std::size_t> narration_index;
+  Json narrations = Json::array(), steps = Json::array();
+  for (std::size_t s = from; s <= to; ++s) {
+    const StepRecord& st = run.trace().at(s);
+    int& listing = listing_of_scope[st.scope];
+    if (listing < 0) {
+      const Listing& callee = run.trace().scope_listing(st.scope);
+      listing = int(listings.size());
+      listings.push_back(listing_json(callee, std::string(callee.title) + " (called by " + std::string(alg.listing.title) + ")"));
+    }
+    const std::string html = markdown_html(narrate(lesson, run, s));
+    auto [it, added] = narration_index.emplace(html, narrations.size());
+    if (added) narrations.push_back(html);
+    steps.push_back({{"step", s},
+                     {"frame", frame_name(s)},
+                     {"listing", listing},
+                     {"line", st.line},
+                     {"kind", std::string(kind_name(st.kind))},
+                     {"narration", it->second}});
+  }
+  const std::size_t start = lesson.start_step >= from && lesson.start_step <= to ? lesson.start_step - from : 0;
+  return {{"title", lesson.title},
+          {"algorithm", std::string(alg.id)},
+          {"numeric", std::string(numeric_name(run.numeric()))},
+          {"size", {w, h}},
+          {"start", start},
+          {"listings", std::move(listings)},
+          {"narrations", std::move(narrations)},
+          {"steps", std::move(steps)}};
+}
+
+}  // namespace
+
+int run_lesson_export(const ExportOptions& o) {
+  const auto [w, h] = parse_frame_size(o.size);
+  const Lesson lesson = load_lesson(o.lesson);
+  const Target target = check_target(o.html_dir);
+
+  Budget budget;
+  budget.max_steps = o.max_steps;
+  HeadlessHost host(w, h);
+  App& app = host.app();
+  Session& session = app.session();
+  session.set_budget(budget);
+  if (!session.open_lesson(o.lesson)) throw InputError(session.error());
+  const std::size_t last = session.steps() - 1;
+  const std::size_t from = o.from.value_or(0), to = o.to.value_or(last);
+  for (auto [value, flag] : {std::pair{from, "--from"}, std::pair{to, "--to"}})
+    if (value > last)
+      throw InputError(std::string(flag) + " " + std::to_string(value) + " is past the last step (" + std::to_string(last) + ")");
+  if (from > to) throw InputError("--from " + std::to_string(from) + " is after --to " + std::to_string(to));
+  if (const std::size_t frames = to - from + 1; frames > kMaxPageFrames) {
+    const std::string limit = "a page holds at most " + std::to_string(kMaxPageFrames) + " frames";
+    if (o.from || o.to)
+      throw InputError("steps " + std::to_string(from) + ".." + std::to_string(to) + " are " + std::to_string(frames) +
+                       " frames; " + limit);
+    throw InputError(o.lesson + " has " + std::to_string(frames) + " steps; " + limit + " (choose a range with --from and --to)");
+  }
+
+  const Json data = page_data(lesson, *session.model(0), from, to, w, h);
+  const std::string page = lesson_page(lesson.title, lesson.intro.empty() ? std::string() : markdown_html(lesson.intro), data);
+
+  TempDir temp(target, o.html_dir);
+  if (std::error_code ec; !fs::create_directory(temp.path() / "frames", ec))
+    throw InputError("--html " + o.html_dir + ": cannot create frames/ (" + ec.message() + ")");
+  for (std::size_t s = from; s <= to; ++s) {
+    app.restart_view();  // each frame as `stepwise render --lesson --step s` draws it, from the opening view
+    session.set_step(s);
+    write_png(temp.path() / frame_name(s), host.render(3).data(), w, h);
+  }
+  {
+    std::ofstream f(temp.path() / "index.html", std::ios::binary);
+    f << page;
+    f.close();
+    if (!f) throw InputError("--html " + o.html_dir + ": cannot write index.html");
+  }
+  temp.commit(target, o.html_dir);
+  std::cerr << "stepwise: wrote " << (to - from + 1) << " frames (steps " << from << ".." << to << ") and index.html to "
+            << target.dir.string() << '\n';
+  return 0;
+}
+
+}  // namespace sw::vis

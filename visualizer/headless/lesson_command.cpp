@@ -1,0 +1,28 @@
+#include "headless/lesson_command.hpp"
+
+namespace sw::vis {
+
+void add_lesson_commands(CLI::App& app, LessonCommands& c) {
+  c.group = app.add_subcommand("lesson", "Work on lesson files: export one as a web page, lint them");
+  c.group->require_subcommand(1);
+
+  ExportOptions& e = c.export_opts;
+  c.export_cmd =
+      c.group->add_subcommand("export", "Write a lesson as a self-contained web page: DIR/index.html and DIR/frames/*.png");
+  c.export_cmd->add_option("lesson", e.lesson, "Lesson file (lessons/*.md)")->required();
+  c.export_cmd->add_option("--html", e.html_dir, "Directory to write (new, empty, or an earlier export, which is replaced)")
+      ->required();
+  c.export_cmd->add_option("--size", e.size, "Frame size WxH (default 1280x800)");
+  c.export_cmd->add_option("--from", e.from, "First step of the page (default 0)");
+  c.export_cmd->add_option("--to", e.to, "Last step of the page, inclusive (default: the last step)");
+  c.export_cmd->add_option("--max-steps", e.max_steps, "Refuse inputs that imply more steps (default 4000000)");
+  c.lint_cmd = add_lint_command(*c.group, c.lint_opts);
+}
+
+int run_lesson_commands(const LessonCommands& c) {
+  if (*c.export_cmd) return run_lesson_export(c.export_opts);
+  if (*c.lint_cmd) return run_lint(c.lint_opts);
+  throw InputError("lesson: give a subcommand (export, lint)");
+}
+
+}  // namespace sw::vis

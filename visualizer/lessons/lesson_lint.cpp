@@ -1,0 +1,91 @@
+// The lesson lint: parses a lesson, records its runs and walks every step of each, so that every
+// section is shown somewhere and every template and condition resolves wherever it is evaluated.
+#include <map>
+#include <set>
+#include "lessons/lesson.hpp"
+#include "lessons/quiz.hpp"
+#include "lessons/trace_model.hpp"
+
+namespace sw::vis {
+namespace {
+
+bool has_template(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\\') ++i;
+    else if (text[i] == '{' && text.find('}', i) != std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Budget& budget) {
+  Lesson lesson;
+  try {
+    lesson = load_lesson(path);
+  } catch (const InputError& e) {
+    return {e.what()};
+  }
+  std::vector<std::string> out;
+  std::set<std::string> said;
+  auto at = [&](std::size_t line, const std::string& msg) {
+    std::string m = path.string() + ":" + std::to_string(line) + ": " + msg;
+    if (said.insert(m).second) out.push_back(std::move(m));
+  };
+  if (has_template(lesson.intro)) at(1, "the intro is shown at every step, so it cannot hold {templates}");
+
+  std::vector<std::shared_ptr<const TraceModel>> runs;
+  try {
+    runs.push_back(record_model(*lesson.run, budget));
+    if (lesson.compare_run) runs.push_back(record_model(*lesson.compare_run, budget));
+    if (const Numeric q = quiz_numeric(lesson); q != lesson.numeric && !(lesson.compare.numeric == q && !lesson.compare.other))
+      runs.push_back(record_model(lesson.run->in(q), budget));  // the quiz's truth
+  } catch (const InputError& e) {
+    at(1, e.what());
+    return out;
+  }
+  if (lesson.start_step > runs[0]->last())
+    at(lesson.start_step_line + 1, "step " + std::to_string(lesson.start_step) + " is past the last step (" + std::to_string(runs[0]->last()) + ")");
+
+  const auto& secs = lesson.sections;
+  std::vector<bool> shown(secs.size()), matched(secs.size());
+  const Numeric quiz_mode = quiz_numeric(lesson);
+  std::map<const Narration*, std::string> unasked;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const TraceModel& run = *runs[r];
+    const bool quiz_run = &run.algorithm() == lesson.algorithm && run.numeric() == quiz_mode;
+    // The extra quiz run is checked for its questions only: the app never narrates it.
+    const bool narrated = r == 0 || (r == 1 && lesson.compare);
+    for (std::size_t s = 0; s < run.size(); ++s) {
+      for (std::size_t k = 0; k < secs.size(); ++k) {
+        std::vector<std::string> problems;
+        if (section_matches(secs[k], lesson, run, s, &problems)) matched[k] = true;
+        for (const std::string& p : problems) at(secs[k].source_line, p);
+      }
+      if (narrated)
+        if (const Narration* n = lesson.section_for(run, s)) {
+          shown[n - secs.data()] = true;
+          for (const std::string& p : fill_templates(n->text, run, s).problems) at(n->source_line, p);
+        }
+      if (const Narration* n = quiz_run ? lesson.quiz_for(run, s) : nullptr) {
+        std::string why;
+        if (question_at(lesson, run, s, &why)) {
+          shown[n - secs.data()] = true;
+          for (const std::string& p : fill_templates(n->prompt, run, s).problems) at(n->source_line, p);
+        } else {
+          unasked.emplace(n, "step " + std::to_string(s) + ": " + why);
+        }
+      }
+    }
+  }
+  for (std::size_t k = 0; k < secs.size(); ++k) {
+    if (shown[k]) continue;
+    const std::string what = "section '## " + secs[k].heading + "' is shown at no step: ";
+    if (secs[k].quiz && unasked.count(&secs[k])) at(secs[k].source_line, what + "nothing follows to predict (" + unasked[&secs[k]] + ")");
+    else if (matched[k]) at(secs[k].source_line, what + "a more specific section wins wherever it applies");
+    else at(secs[k].source_line, what + "no step of " + (secs[k].quiz ? "the quiz run" : "any run") + " has its key" + (secs[k].conditions.empty() ? "" : " with its conditions true"));
+  }
+  return out;
+}
+
+}  // namespace sw::vis
