@@ -61,12 +61,11 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
   Vec2<Num> p = q[0];
   for (std::int64_t k = 0; k < b.n; ++k) {  // bounded: n is validated
     const Vec2<Num> next = p + d1;
-    if constexpr (Probe::on) {
-      probe.step(L::segment, StepKind::advance).idx("k", k).segment(p, next);
-      probe.enter(lines::DdaLine::id, lines::DdaLine::listing());
+    if constexpr (Probe::on) probe.step(L::segment, StepKind::advance).idx("k", k).segment(p, next);
+    {
+      const auto call = nested<lines::DdaLine>(probe);
+      (void)lines::dda_line<Num>(p, next, out, probe);
     }
-    (void)lines::dda_line<Num>(p, next, out, probe);
-    if constexpr (Probe::on) probe.leave();
     p = next;
     d1 = d1 + d2;
     d2 = d2 + d3;

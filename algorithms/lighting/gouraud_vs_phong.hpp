@@ -59,22 +59,19 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
   auto shade_at = [&](const Vec3<Num>& p, const Vec3<Num>& n) -> Vec3<Num> {
     ShadeScene<Num> s = t.scene;
     s.p = p, s.n = n;
-    if constexpr (Probe::on) probe.enter(Shade::id, Shade::listing());
-    const Vec3<Num> c = shade(s, probe).rgb;
-    if constexpr (Probe::on) probe.leave();
-    return c;
+    const auto call = nested<Shade>(probe);
+    return shade(s, probe).rgb;
   };
   for (int k = 0; k < 3; ++k) {
     out.vertex[k] = shade_at(t.p[k], t.n[k]);
     if constexpr (Probe::on) probe.step(L::vertices, StepKind::init).idx("k", k).colour("c", out.vertex[k]).point(t.xy[k]).label("vertex").keep();
   }
   std::vector<Pixel> pixels;
-  if constexpr (Probe::on) probe.enter(fill::TriangleEdge::id, fill::TriangleEdge::listing());
-  fill::triangle_edge(fill::EdgeTriangle<Num>{t.xy, Num(1)}, pixels, probe);
-  if constexpr (Probe::on) {
-    probe.leave();
-    probe.step(L::raster, StepKind::init).idx("pixels", std::int64_t(pixels.size()));
+  {
+    const auto call = nested<fill::TriangleEdge>(probe);
+    fill::triangle_edge(fill::EdgeTriangle<Num>{t.xy, Num(1)}, pixels, probe);
   }
+  if constexpr (Probe::on) probe.step(L::raster, StepKind::init).idx("pixels", std::int64_t(pixels.size()));
   const auto& v = t.xy;
   const Num area2 = Num((v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x));
   auto edge = [&](const Vec2<Num>& a, const Vec2<Num>& b, const Vec2<Num>& s) { return Num((b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x)); };

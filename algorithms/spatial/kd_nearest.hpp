@@ -131,10 +131,11 @@ KdNearestResult<Num> kd_nearest(const std::vector<VecN<Num, D>>& pts, const VecN
   std::vector<Box<Num, D>> bounds;
   bounds.reserve(pts.size());
   for (const auto& p : pts) bounds.push_back(Box<Num, D>::at(p));
-  if constexpr (Probe::on) probe.enter(KdBuild::id, KdBuild::listing());
-  const KdTree<Num, D> tree = kd_build<Num, D>(bounds, true, probe);
+  const KdTree<Num, D> tree = [&] {
+    const auto call = nested<KdBuild>(probe);
+    return kd_build<Num, D>(bounds, true, probe);
+  }();
   if constexpr (Probe::on) {
-    probe.leave();
     auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
     s.point(q).label("q").keep();
     for (const auto& p : pts) s.point(p).keep();  // the build's own items end with it

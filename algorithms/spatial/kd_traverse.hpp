@@ -55,9 +55,10 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
   using L = KdTraverse;
   KdHit<Num> out;
   const Box<Num, 3>& root = tree.nodes[0].cell;
-  if constexpr (Probe::on) probe.enter(ray::RayBox::id, ray::RayBox::listing());
-  const ray::BoxHit<Num> box = ray::ray_box<Num>(r, root.lo, root.hi, probe);
-  if constexpr (Probe::on) probe.leave();
+  const ray::BoxHit<Num> box = [&] {
+    const auto call = nested<ray::RayBox>(probe);
+    return ray::ray_box<Num>(r, root.lo, root.hi, probe);
+  }();
   const Num zero(0);
   const Num t_root = box.t_near > zero ? box.t_near : zero;
   if constexpr (Probe::on) {
@@ -119,12 +120,11 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
       }
     }
     for (const std::int32_t i : tree.nodes[e.node].prims) {
-      if constexpr (Probe::on) {
-        probe.step(L::test, StepKind::visit).idx("prim", i);
-        probe.enter(ray::RayTriangleWatertight::id, ray::RayTriangleWatertight::listing());
-      }
-      const ray::TriangleHit<Num> h = ray::ray_triangle_watertight<Num>(r, tris[i], probe);
-      if constexpr (Probe::on) probe.leave();
+      if constexpr (Probe::on) probe.step(L::test, StepKind::visit).idx("prim", i);
+      const ray::TriangleHit<Num> h = [&] {
+        const auto call = nested<ray::RayTriangleWatertight>(probe);
+        return ray::ray_triangle_watertight<Num>(r, tris[i], probe);
+      }();
       ++out.prim_tests;
       if (h.hit && (!out.hit || h.t < out.t || (h.t == out.t && i < out.prim))) {
         out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
@@ -150,10 +150,11 @@ KdHit<Num> kd_traverse(const std::vector<std::array<Vec3<Num>, 3>>& tris, const 
   std::vector<Box<Num, 3>> bounds;
   bounds.reserve(tris.size());
   for (const auto& t : tris) bounds.push_back(triangle_bounds(t));
-  if constexpr (Probe::on) probe.enter(KdBuild::id, KdBuild::listing());
-  const KdTree<Num, 3> tree = kd_build<Num, 3>(bounds, false, probe);
+  const KdTree<Num, 3> tree = [&] {
+    const auto call = nested<KdBuild>(probe);
+    return kd_build<Num, 3>(bounds, false, probe);
+  }();
   if constexpr (Probe::on) {
-    probe.leave();
     auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
     s.ray(r.o, r.d).keep();
     for (const auto& t : tris) s.triangle(t[0], t[1], t[2]).keep();

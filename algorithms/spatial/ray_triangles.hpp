@@ -43,12 +43,11 @@ TreeHit<Num> ray_triangles_with(const std::vector<std::array<Vec3<Num>, 3>>& tri
   }
   for (std::size_t k = 0; k < tris.size(); ++k) {  // bounded by the triangle count
     const auto i = static_cast<std::int32_t>(k);
-    if constexpr (Probe::on) {
-      probe.step(L::test, StepKind::visit).idx("prim", i);
-      probe.enter(Test::id, Test::listing());
-    }
-    const ray::TriangleHit<Num> h = Test{}(r, tris[k], probe);
-    if constexpr (Probe::on) probe.leave();
+    if constexpr (Probe::on) probe.step(L::test, StepKind::visit).idx("prim", i);
+    const ray::TriangleHit<Num> h = [&] {
+      const auto call = nested<Test>(probe);
+      return Test{}(r, tris[k], probe);
+    }();
     ++out.prim_tests;
     if (h.hit && (!out.hit || h.t < out.t)) {  // in id order, an equal t keeps the lower id
       out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
