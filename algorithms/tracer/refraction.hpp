@@ -9,6 +9,7 @@
 #pragma once
 #include <cmath>
 #include <string_view>
+#include "core/exact_sign.hpp"
 #include "lighting/brdf.hpp"
 #include "lighting/cook_torrance.hpp"
 #include "lighting/lighting_common.hpp"
@@ -44,12 +45,10 @@ Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N, const Num& n1,
   out.cos_i = Num(-dot(dn, nn));
   const Num c = out.cos_i < Num(0) ? Num(0) : out.cos_i > Num(1) ? Num(1) : out.cos_i;
   if constexpr (Probe::on) probe.step(L::cosine, StepKind::init).num("c", c).ray(Vec3<Num>{}, dn).label("d");
-  const Vec3<Num> index{n1, n2, Num(0)};
-  out.tir = lighting::exact_sign([](const auto& D, const auto& M, const auto& I) {
-    using T = std::decay_t<decltype(D.x)>;
-    const T dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
-    return T(I.x * I.x * T(dd * mm - dm * dm) - I.y * I.y * dd * mm);
-  }, d, N, index) >= 0;
+  out.tir = num::exact_sign([](const auto& D, const auto& M, const auto& m1, const auto& m2) {
+    const auto dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
+    return m1 * m1 * (dd * mm - dm * dm) - m2 * m2 * dd * mm;
+  }, d, N, n1, n2) >= 0;
   const Num eta = Num(n1 / n2);
   out.guide_tir = Num(eta * std::sqrt(std::max(Num(0), Num(Num(1) - c)))) >= Num(1);
   if constexpr (Probe::on) probe.step(L::tir, StepKind::decide).idx("tir", out.tir).idx("guide_tir", out.guide_tir).num("eta", eta);
