@@ -7,14 +7,9 @@
 #include <string_view>
 #include "core/probe.hpp"
 #include "rays/ray_common.hpp"
+#include "rays/sphere_hit.hpp"
 
 namespace sw::ray {
-
-template <class Num> struct SphereHit {
-  bool hit = false;
-  Num t{};
-  bool t_exact = true;  // false when t went through a rounded square root
-};
 
 struct RaySphereGeometric {
   static constexpr std::string_view id = "ray-sphere-geometric";
@@ -41,9 +36,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   SphereHit<Num> out;
   const Vec3<Num> l = c - r.o;
   const Num l2 = dot(l, l), a = dot(r.d, r.d), r2 = Num(radius * radius);
-  if constexpr (Probe::on)
-    probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2)
-        .ray(r.o, r.d).keep().sphere(c, radius).keep();
+  if constexpr (Probe::on) record_sphere_scene(probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2), r, c, radius);
   const bool inside = l2 < r2, outside = l2 > r2;
   if constexpr (Probe::on) probe.step(L::inside, StepKind::decide).idx("inside", inside).idx("on", !inside && !outside);
   const Num tca = dot(l, r.d);

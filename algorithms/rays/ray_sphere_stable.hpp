@@ -4,7 +4,11 @@
 // q = -(b' + sign(b') sqrt(D)), t = c/q and q/a, which never subtracts nearly equal numbers.
 // Which of the two is nearer follows from the sign of b' alone.
 #pragma once
-#include "rays/ray_sphere_geometric.hpp"
+#include <array>
+#include <string_view>
+#include "core/probe.hpp"
+#include "rays/ray_common.hpp"
+#include "rays/sphere_hit.hpp"
 
 namespace sw::ray {
 
@@ -34,9 +38,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   SphereHit<Num> out;
   const Vec3<Num> f = r.o - c;
   const Num a = dot(r.d, r.d), bh = dot(f, r.d), r2 = Num(radius * radius), cc = Num(dot(f, f) - r2);
-  if constexpr (Probe::on)
-    probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc)
-        .ray(r.o, r.d).keep().sphere(c, radius).keep();
+  if constexpr (Probe::on) record_sphere_scene(probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc), r, c, radius);
   const Vec3<Num> l = f - Num(bh / a) * r.d;
   if constexpr (Probe::on)  // the foot of the perpendicular from c, and whether the line is within r of c
     probe.step(L::foot, StepKind::advance).num("lx", l.x).num("ly", l.y).num("lz", l.z).point(Vec3<Num>(c + l)).label("foot").keep()
@@ -69,11 +71,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   }
   out.hit = far_hit;  // near_hit implies far_hit
   out.t = Num(num::select(far_is_qa, q, cc) / num::select(far_is_qa, a, q));
-  if constexpr (Probe::on) {
-    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
-    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
-    else probe.step(L::none, StepKind::miss);
-  }
+  if constexpr (Probe::on) record_sphere_end<L>(probe, r, out.t, near_hit, far_hit);
   return out;
 }
 

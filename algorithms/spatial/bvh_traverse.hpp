@@ -104,22 +104,13 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
       for (std::int32_t j = nd.first; j < nd.first + nd.count; ++j) {
         const std::int32_t i = bvh.order[j];
         if (i == q.skip) continue;
-        if constexpr (Probe::on) probe.step(L::test, StepKind::visit).idx("prim", i);
-        const ray::TriangleHit<Num> h = [&] {
-          const auto call = nested<ray::RayTriangleWatertight>(probe);
-          return ray::ray_triangle_watertight<Num>(r, tris[i], probe);
-        }();
-        ++out.prim_tests;
-        if (q.any) {
-          if (h.hit && h.t < q.t_max) {
-            out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-            if constexpr (Probe::on) probe.step(L::stop, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
-            stack.clear();
-            break;
-          }
-        } else if (h.hit && (!out.hit || h.t < out.t || (h.t == out.t && i < out.prim))) {
-          out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-          if constexpr (Probe::on) probe.step(L::keep, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
+        const ray::TriangleHit<Num> h = leaf_test<L>(out, tris, r, i, probe);
+        if (!q.any) {
+          keep_closest<L>(out, h, i, r, probe);
+        } else if (h.hit && h.t < q.t_max) {
+          take_hit<L>(out, h, i, r, L::stop, probe);
+          stack.clear();
+          break;
         }
       }
       continue;
@@ -144,10 +135,7 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
       bvh_detail::record_stack(s, bvh, stack);
     }
   }
-  if constexpr (Probe::on) {
-    auto& s = probe.step(L::done, out.hit ? StepKind::hit : StepKind::miss).idx("hit", out.hit);
-    if (out.hit) s.idx("prim", out.prim).num("t", out.t);
-  }
+  if constexpr (Probe::on) record_done<L>(out, probe);
   return out;
 }
 

@@ -119,27 +119,13 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
         probe.step(L::descend, StepKind::visit).idx("node", e.node).num("t0", e.t0).num("t1", e.t1).node(e.node, tree.nodes[e.node].parent, c.lo, c.hi);
       }
     }
-    for (const std::int32_t i : tree.nodes[e.node].prims) {
-      if constexpr (Probe::on) probe.step(L::test, StepKind::visit).idx("prim", i);
-      const ray::TriangleHit<Num> h = [&] {
-        const auto call = nested<ray::RayTriangleWatertight>(probe);
-        return ray::ray_triangle_watertight<Num>(r, tris[i], probe);
-      }();
-      ++out.prim_tests;
-      if (h.hit && (!out.hit || h.t < out.t || (h.t == out.t && i < out.prim))) {
-        out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-        if constexpr (Probe::on) probe.step(L::keep, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
-      }
-    }
+    for (const std::int32_t i : tree.nodes[e.node].prims) keep_closest<L>(out, leaf_test<L>(out, tris, r, i, probe), i, r, probe);
     if (out.hit && !(e.t1 < out.t)) {
       if constexpr (Probe::on) probe.step(L::exit, StepKind::decide).num("t_best", out.t).num("t1", e.t1);
       break;
     }
   }
-  if constexpr (Probe::on) {
-    auto& s = probe.step(L::done, out.hit ? StepKind::hit : StepKind::miss).idx("hit", out.hit);
-    if (out.hit) s.idx("prim", out.prim).num("t", out.t);
-  }
+  if constexpr (Probe::on) record_done<L>(out, probe);
   return out;
 }
 
