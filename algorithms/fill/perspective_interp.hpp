@@ -75,8 +75,8 @@ struct AffineInterp {
 template <class Num> Vec3<Num> checker_texel(std::span<const Num> a) {
   double sum = std::floor(num::to_double(a[0]));
   if (a.size() > 1) sum += std::floor(num::to_double(a[1]));
-  if (std::fmod(std::fabs(sum), 2.0) == 0) return {Num(Num(7) / Num(8)), Num(Num(7) / Num(8)), Num(Num(3) / Num(4))};
-  return {Num(Num(1) / Num(4)), Num(Num(3) / Num(8)), Num(Num(5) / Num(8))};
+  if (std::fmod(std::fabs(sum), 2.0) == 0) return {Num(7) / Num(8), Num(7) / Num(8), Num(3) / Num(4)};
+  return {Num(1) / Num(4), Num(3) / Num(8), Num(5) / Num(8)};
 }
 
 // The whole algorithm: clip, cut into triangles, project, fill each, merge the rows.
@@ -87,7 +87,7 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
   const ClipPolygon<Num> poly = clip_near<L>(tri, probe);
   if constexpr (Probe::on) {
     std::array<Vec2<Num>, 4> screen;
-    for (std::size_t k = 0; k < poly.k; ++k) screen[k] = {Num(poly.c[k].c[0] / poly.c[k].w()), Num(poly.c[k].c[1] / poly.c[k].w())};
+    for (std::size_t k = 0; k < poly.k; ++k) screen[k] = {poly.c[k].c[0] / poly.c[k].w(), poly.c[k].c[1] / poly.c[k].w()};
     probe.step(L::fan, StepKind::init).idx("corners", std::int64_t(poly.k)).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(screen.data(), poly.k)).keep();
   }
   std::vector<std::size_t> firsts;  // where each triangle's pixels start
@@ -96,10 +96,10 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
     const std::array<std::size_t, 3> idx{0, f + 1, f + 2};
     for (int k = 0; k < 3; ++k) {
       const ClipVertex<Num>& c = poly.c[idx[k]];
-      const Num q = Num(Num(1) / c.w());
-      h[k].p = {Num(c.c[0] * q), Num(c.c[1] * q)};
+      const Num q = Num(1) / c.w();
+      h[k].p = {c.c[0] * q, c.c[1] * q};
       h[k].n = Persp ? n + 1 : n;
-      for (std::size_t a = 0; a < n; ++a) h[k].a[a] = Persp ? Num(c.a[a] * q) : c.a[a];
+      for (std::size_t a = 0; a < n; ++a) h[k].a[a] = Persp ? c.a[a] * q : c.a[a];
       if constexpr (Persp) h[k].a[n] = q;
     }
     if constexpr (Probe::on) {
@@ -112,7 +112,7 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
     // The triangle by the double DDA, plotting the n attributes at each pixel (perspective: h / q).
     double_dda<L, Dp0::sample>(h, Screen{}, {"q_h", "dq_h", "ds_h", false, false}, out, probe, [&](const Pixel& px, const Vary<Num>& s) {
       std::array<Num, kMaxAttrs> a{};
-      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? Num(s.a[c] / s.a[n]) : s.a[c];
+      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? s.a[c] / s.a[n] : s.a[c];
       out.pixels.push_back(px);
       out.values.insert(out.values.end(), a.begin(), a.begin() + n);
       if constexpr (Probe::on) {

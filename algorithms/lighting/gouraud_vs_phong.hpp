@@ -48,7 +48,7 @@ struct GouraudVsPhong {
 };
 
 template <class Num> Vec3<Num> blend(const std::array<Num, 3>& b, const std::array<Vec3<Num>, 3>& v) {
-  return Num(b[0]) * v[0] + Num(b[1]) * v[1] + Num(b[2]) * v[2];
+  return b[0] * v[0] + b[1] * v[1] + b[2] * v[2];
 }
 
 // Preconditions (validated): the vertex normals are not 0, the triangle's box is small (the runtime
@@ -73,8 +73,8 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
   }
   if constexpr (Probe::on) probe.step(L::raster, StepKind::init).idx("pixels", std::int64_t(pixels.size()));
   const auto& v = t.xy;
-  const Num area2 = Num((v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x));
-  auto edge = [&](const Vec2<Num>& a, const Vec2<Num>& b, const Vec2<Num>& s) { return Num((b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x)); };
+  const Num area2 = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+  auto edge = [&](const Vec2<Num>& a, const Vec2<Num>& b, const Vec2<Num>& s) { return (b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x); };
   const std::int64_t shift = [&] {
     std::int64_t lo = pixels.empty() ? 0 : pixels[0].x, hi = lo;
     for (const Pixel& p : pixels) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
@@ -84,7 +84,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
     GouraudPixel<Num> g;
     g.px = px;
     const Vec2<Num> s{Num(px.x), Num(px.y)};
-    const std::array<Num, 3> b{Num(edge(v[1], v[2], s) / area2), Num(edge(v[2], v[0], s) / area2), Num(edge(v[0], v[1], s) / area2)};
+    const std::array<Num, 3> b{edge(v[1], v[2], s) / area2, edge(v[2], v[0], s) / area2, edge(v[0], v[1], s) / area2};
     if constexpr (Probe::on) probe.step(L::pixel, StepKind::advance).idx("i", px.x).idx("j", px.y).num("b0", b[0]).num("b1", b[1]).num("b2", b[2]);
     g.gouraud = blend(b, out.vertex);
     if constexpr (Probe::on) probe.step(L::gouraud, StepKind::plot).colour("colour", g.gouraud).pixel(Pixel{px.x + shift, px.y});
@@ -98,7 +98,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
     g.phong = shade_at(p, n);
     if constexpr (Probe::on) probe.step(L::phong, StepKind::plot).colour("colour", g.phong).pixel(Pixel{px.x + 2 * shift, px.y});
     Num d(0);
-    for (int k = 0; k < 3; ++k) d = std::max(d, num::abs(Num(g.phong[k] - g.gouraud[k])));
+    for (int k = 0; k < 3; ++k) d = std::max(d, num::abs(g.phong[k] - g.gouraud[k]));
     out.max_diff = std::max(out.max_diff, d);
     if constexpr (Probe::on) probe.step(L::diff, StepKind::decide).num("diff", d).num("max_diff", out.max_diff);
     out.pixels.push_back(g);

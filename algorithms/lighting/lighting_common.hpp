@@ -35,7 +35,7 @@ template <class Num> int sign_mirror(const Vec3<Num>& n, const Vec3<Num>& l, con
 
 // v / |v| (v != 0; a float v whose square underflows gives Inf or NaN components: a float failure
 // the bench counts, never masked).
-template <class Num> Vec3<Num> unit(const Vec3<Num>& v) { return Num(Num(1) / num::sqrt_of(dot(v, v))) * v; }
+template <class Num> Vec3<Num> unit(const Vec3<Num>& v) { return (Num(1) / num::sqrt_of(dot(v, v))) * v; }
 
 // The frame of raw N, L, E (non-zero), with its steps on listing L (which includes
 // SW_LIGHTING_FRAME_LINES). `given`, if set, holds the decisions made beforehand on the exact input
@@ -69,7 +69,7 @@ Frame<Num> shading_frame(const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num
 // h = (l + e)/|l + e|. Defined whenever lit and seen: n.l > 0 and n.e > 0 rule out l = -e.
 template <class Num> Vec3<Num> half_vector(const Frame<Num>& f) { return unit(Vec3<Num>(f.l + f.e)); }
 // r = 2 (n.l) n - l: the mirror direction of l about n (unit when n and l are).
-template <class Num> Vec3<Num> mirror_of(const Frame<Num>& f) { return Num(Num(2) * f.nl) * f.n - f.l; }
+template <class Num> Vec3<Num> mirror_of(const Frame<Num>& f) { return Num(2) * f.nl * f.n - f.l; }
 
 // Runs a model's term on the frame: 0 below the horizon (the `below` step), else term().
 template <class L, class Num, class Probe, class Term> Num frame_term(const Frame<Num>& f, Probe& probe, Term&& term) {

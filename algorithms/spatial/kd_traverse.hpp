@@ -95,7 +95,7 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
         next = r.o[k] <= nd.split ? nd.left : nd.right;
         if constexpr (Probe::on) probe.step(L::parallel, StepKind::decide).idx("axis", k).num("p", nd.split).idx("left", next == nd.left);
       } else {
-        const Num ts = Num(Num(nd.split - r.o[k]) / r.d[k]);
+        const Num ts = (nd.split - r.o[k]) / r.d[k];
         const bool up = r.d[k] > zero;
         const std::int32_t first = up ? nd.left : nd.right, second = up ? nd.right : nd.left;
         if constexpr (Probe::on) probe.step(L::cross, StepKind::decide).idx("axis", k).num("p", nd.split).num("t_s", ts).idx("first", first).idx("second", second);

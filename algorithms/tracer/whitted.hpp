@@ -183,9 +183,9 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
       }
       if constexpr (Probe::on) probe_.step(L::split, StepKind::decide).idx("tir", tr.tir).num("F", tr.fresnel);
     }
-    const Num wr = Num(m.kr + m.kt * tr.fresnel), wt = Num(m.kt * Num(Num(1) - tr.fresnel));
+    const Num wr = m.kr + m.kt * tr.fresnel, wt = m.kt * (Num(1) - tr.fresnel);
     if (plan_.reflection[mi]) {
-      const Vec3<Num> dir = r.d - Num(Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
+      const Vec3<Num> dir = r.d - (Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
       if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror");
       add(c, wr, weight, sf, here, dir, depth, counts_.reflection);
     }
@@ -227,7 +227,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
   // an ancestor of weight 0) adds nothing: only --all-effects casts it, from its own allowance, so
   // both plans spend the pixel's budget on the same rays.
   void add(Vec3<Num>& c, const Num& w, const Num& weight, const Surface<Num>& sf, const Leaving& here, const Vec3<Num>& dir, int depth, std::uint64_t& count) {
-    const Num path = Num(weight * w);
+    const Num path = weight * w;
     std::int64_t& allowance = path > Num(0) ? budget_ : spare_;
     if (!(path > Num(0)) && !plan_.zero_weight) return;
     if (allowance <= 0) {
