@@ -1,19 +1,18 @@
 #include "curves_bezier_oracle.hpp"
-#include <CGAL/Gmpq.h>
+#include "cgal_bridge.hpp"
 #include "lines_oracle.hpp"
 
 namespace sw::oracle {
 
 Vec2<Rational> bezier_point(const std::array<Vec2<Rational>, 4>& p, const Rational& t) {
-  using Q = CGAL::Gmpq;
-  const Q tq(t.get_mpq_t()), s = Q(1) - tq;
+  const Q tq = q(t), s = Q(1) - tq;
   const Q w[4] = {s * s * s, 3 * s * s * tq, 3 * s * tq * tq, tq * tq * tq};
   Q x(0), y(0);
   for (int i = 0; i < 4; ++i) {
-    x += w[i] * Q(p[i].x.get_mpq_t());
-    y += w[i] * Q(p[i].y.get_mpq_t());
+    x += w[i] * q(p[i].x);
+    y += w[i] * q(p[i].y);
   }
-  return {Rational(x.mpq()), Rational(y.mpq())};
+  return {r(x), r(y)};
 }
 
 std::vector<Pixel> bezier_pixels(const std::array<Vec2<Rational>, 4>& p, std::int64_t n) {

@@ -1,20 +1,17 @@
 #include "curves_oracle.hpp"
-#include <CGAL/Gmpq.h>
 #include <algorithm>
 #include <set>
 #include <stdexcept>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
-using Q = CGAL::Gmpq;
 static_assert(sizeof(long) >= sizeof(std::int64_t), "mpz get_si must hold an int64");
-
-Q q(const Rational& v) { return Q(v.get_mpq_t()); }
 
 // round(v) = floor(v + 1/2), exactly; throws if the result does not fit a pixel index.
 std::int64_t round_q(const Q& v) {
-  const Rational w(Q(v + Q(1, 2)).mpq());
+  const Rational w = r(v + Q(1, 2));
   mpz_class f;
   mpz_fdiv_q(f.get_mpz_t(), w.get_num_mpz_t(), w.get_den_mpz_t());
   if (!mpz_fits_slong_p(f.get_mpz_t())) throw std::overflow_error("poly_pixels: round(y) out of int64 range");

@@ -2,21 +2,16 @@
 #include <algorithm>
 #include <map>
 #include <tuple>
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Intersections_2/Iso_rectangle_2_Segment_2.h>
 #include <CGAL/Intersections_2/Triangle_2_Triangle_2.h>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
-using Q = CGAL::Gmpq;
-using K = CGAL::Simple_cartesian<Q>;
+using K = ExactKernel;
 using P2 = K::Point_2;
 
-Q q(const Rational& r) { return Q(r.get_mpq_t()); }
-Rational r(const Q& x) { return Rational(x.mpq()); }
-P2 pt(const Vec2<Rational>& v) { return P2(q(v.x), q(v.y)); }
 Vec2<Rational> vec(const P2& p) { return {r(p.x()), r(p.y())}; }
 bool before(const Vec2<Rational>& a, const Vec2<Rational>& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
@@ -25,7 +20,7 @@ bool before(const Vec2<Rational>& a, const Vec2<Rational>& b) { return a.x < b.x
 // diagonals v0 -> v_i cancel in the sum of the triangles' boundaries).
 std::vector<K::Triangle_2> fan(const Polygon2& poly) {
   std::vector<K::Triangle_2> out;
-  for (std::size_t i = 1; i + 1 < poly.size(); ++i) out.emplace_back(pt(poly[0]), pt(poly[i]), pt(poly[i + 1]));
+  for (std::size_t i = 1; i + 1 < poly.size(); ++i) out.emplace_back(point(poly[0]), point(poly[i]), point(poly[i + 1]));
   return out;
 }
 
@@ -33,12 +28,12 @@ std::vector<K::Triangle_2> fan(const Polygon2& poly) {
 
 std::optional<std::array<Vec2<Rational>, 2>> clip_segment(const Vec2<Rational>& p0, const Vec2<Rational>& p1, const Vec2<Rational>& lo,
                                                           const Vec2<Rational>& hi) {
-  const K::Iso_rectangle_2 window(pt(lo), pt(hi));
+  const K::Iso_rectangle_2 window(point(lo), point(hi));
   if (p0 == p1) {  // a point: in the closed window or not
-    if (window.has_on_unbounded_side(pt(p0))) return std::nullopt;
+    if (window.has_on_unbounded_side(point(p0))) return std::nullopt;
     return std::array{p0, p0};
   }
-  const auto hit = CGAL::intersection(K::Segment_2(pt(p0), pt(p1)), window);
+  const auto hit = CGAL::intersection(K::Segment_2(point(p0), point(p1)), window);
   if (!hit) return std::nullopt;
   if (const P2* p = boost::get<P2>(&*hit)) return std::array{vec(*p), vec(*p)};
   const K::Segment_2& s = boost::get<K::Segment_2>(*hit);

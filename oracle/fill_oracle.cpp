@@ -1,9 +1,8 @@
 #include "fill_oracle.hpp"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
 #include <algorithm>
 #include <stdexcept>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
@@ -11,7 +10,7 @@ namespace {
 // Exact orientation either way: Epick's filtered predicates when every coordinate is a double
 // (the common case, and 100x faster), the rational kernel otherwise.
 using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Slow = CGAL::Simple_cartesian<CGAL::Gmpq>;
+using Slow = ExactKernel;
 
 bool all_doubles(const std::vector<std::vector<Vec2<Rational>>>& rings) {
   for (const auto& ring : rings)
@@ -19,11 +18,6 @@ bool all_doubles(const std::vector<std::vector<Vec2<Rational>>>& rings) {
       for (int a = 0; a < 2; ++a)
         if (Rational(v[a].get_d()) != v[a]) return false;
   return true;
-}
-
-template <class K> typename K::Point_2 point(const Vec2<Rational>& v) {
-  if constexpr (std::is_same_v<K, Fast>) return {v.x.get_d(), v.y.get_d()};
-  else return {CGAL::Gmpq(v.x.get_mpq_t()), CGAL::Gmpq(v.y.get_mpq_t())};
 }
 
 struct Box {

@@ -1,21 +1,15 @@
 #include "fill_raster_oracle.hpp"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
 #include <cmath>
 #include <stdexcept>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
 // Epick's filtered exact predicates when every coordinate is a double, the rational kernel otherwise.
 using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Slow = CGAL::Simple_cartesian<CGAL::Gmpq>;
-
-template <class K> typename K::Point_2 point(const Vec2<Rational>& v) {
-  if constexpr (std::is_same_v<K, Fast>) return {v.x.get_d(), v.y.get_d()};
-  else return {CGAL::Gmpq(v.x.get_mpq_t()), CGAL::Gmpq(v.y.get_mpq_t())};
-}
+using Slow = ExactKernel;
 
 // Counter-clockwise edge a -> c keeps the samples on it when it runs down (a left edge) or runs
 // right along a row (a bottom edge): the sign of its edge function along the move (eps, eps^2).

@@ -1,52 +1,15 @@
 #include "lighting_oracle.hpp"
-#include <mpfr.h>
 #include <stdexcept>
 #include <utility>
+#include "mpfr_value.hpp"
 
 namespace sw::lighting_oracle {
 namespace {
 
 constexpr int kBits = 400;
 
-// A 400-bit MPFR number with value semantics, just enough arithmetic for the formulas below.
-class Big {
- public:
-  Big() { mpfr_init2(v_, kBits), mpfr_set_zero(v_, 1); }
-  Big(const Rational& q) { mpfr_init2(v_, kBits), mpfr_set_q(v_, q.get_mpq_t(), MPFR_RNDN); }
-  Big(int i) { mpfr_init2(v_, kBits), mpfr_set_si(v_, i, MPFR_RNDN); }
-  Big(const Big& o) { mpfr_init2(v_, kBits), mpfr_set(v_, o.v_, MPFR_RNDN); }
-  Big& operator=(const Big& o) {
-    mpfr_set(v_, o.v_, MPFR_RNDN);
-    return *this;
-  }
-  ~Big() { mpfr_clear(v_); }
-  mpfr_ptr p() { return v_; }
-  mpfr_srcptr p() const { return v_; }
-  Rational q() const {
-    Rational r;
-    mpfr_get_q(r.get_mpq_t(), v_);
-    return r;
-  }
-  template <class F> static Big fn(F f, const Big& a) {
-    Big r;
-    f(r.v_, a.v_, MPFR_RNDN);
-    return r;
-  }
-  template <class F> static Big fn2(F f, const Big& a, const Big& b) {
-    Big r;
-    f(r.v_, a.v_, b.v_, MPFR_RNDN);
-    return r;
-  }
-  friend Big operator+(const Big& a, const Big& b) { return fn2(mpfr_add, a, b); }
-  friend Big operator-(const Big& a, const Big& b) { return fn2(mpfr_sub, a, b); }
-  friend Big operator*(const Big& a, const Big& b) { return fn2(mpfr_mul, a, b); }
-  friend Big operator/(const Big& a, const Big& b) { return fn2(mpfr_div, a, b); }
-  friend bool operator<(const Big& a, const Big& b) { return mpfr_less_p(a.v_, b.v_); }
-  friend Big operator-(const Big& a) { return fn(mpfr_neg, a); }
-
- private:
-  mpfr_t v_;
-};
+// 400-bit MPFR numbers, for the formulas below.
+using Big = oracle::Mpfr<kBits>;
 
 Big sqrt_b(const Big& a) { return Big::fn(mpfr_sqrt, a); }
 Big acos_b(const Big& a) { return Big::fn(mpfr_acos, a); }
@@ -56,11 +19,7 @@ Big tan_b(const Big& a) { return Big::fn(mpfr_tan, a); }
 Big exp_b(const Big& a) { return Big::fn(mpfr_exp, a); }
 Big pow_b(const Big& a, const Big& b) { return Big::fn2(mpfr_pow, a, b); }
 Big atan2_b(const Big& y, const Big& x) { return Big::fn2(mpfr_atan2, y, x); }
-Big pi_b() {
-  Big r;
-  mpfr_const_pi(r.p(), MPFR_RNDN);
-  return r;
-}
+Big pi_b() { return Big::pi(); }
 Big max_b(const Big& a, const Big& b) { return a < b ? b : a; }
 Big min_b(const Big& a, const Big& b) { return a < b ? a : b; }
 // A cosine clamped into [-1, 1] (a rounded ratio of exact 1 may land a hair outside).
@@ -121,7 +80,7 @@ OracleTerm term(std::string_view model, lighting::DiffuseModel diffuse, const Ve
         const Big A = Big(1) - Big(Rational(1, 2)) * s2 / (s2 + Big(Rational(33, 100)));
         const Big B = Big(Rational(45, 100)) * s2 / (s2 + Big(Rational(9, 100)));
         b.put("A", A), b.put("B", B);
-        const BV axis = mpfr_cmpabs(n.x.p(), n.z.p()) > 0 ? BV{Big(0), Big(0), Big(1)} : BV{Big(1), Big(0), Big(0)};
+        const BV axis = mpfr_cmpabs(n.x.get(), n.z.get()) > 0 ? BV{Big(0), Big(0), Big(1)} : BV{Big(1), Big(0), Big(0)};
         const BV t = normalised(crossb(n, axis)), bt = crossb(n, t);
         const Big pi_ = atan2_b(dotb(l, bt), dotb(l, t)), pr = atan2_b(dotb(e, bt), dotb(e, t));
         const Big alpha = max_b(ti, tr), beta = min_b(ti, tr);

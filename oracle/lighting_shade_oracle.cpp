@@ -1,37 +1,17 @@
 // The GL lighting equation written out in MPFR from the spec's formulas (lighting_shade_oracle.hpp).
 #include "lighting_shade_oracle.hpp"
-#include <mpfr.h>
+#include "mpfr_value.hpp"
 
 namespace sw::oracle {
 namespace {
 
-// An MPFR number at a fixed precision, with the few operations the equation needs.
-class F {
- public:
-  explicit F(int bits = kShadeOracleBits) { mpfr_init2(v_, bits); mpfr_set_ui(v_, 0, MPFR_RNDN); }
-  F(const Rational& q, int bits = kShadeOracleBits) { mpfr_init2(v_, bits); mpfr_set_q(v_, q.get_mpq_t(), MPFR_RNDN); }
-  F(const F& o) { mpfr_init2(v_, mpfr_get_prec(o.v_)); mpfr_set(v_, o.v_, MPFR_RNDN); }
-  F& operator=(const F& o) { mpfr_set(v_, o.v_, MPFR_RNDN); return *this; }
-  ~F() { mpfr_clear(v_); }
-  mpfr_ptr get() { return v_; }
-  mpfr_srcptr get() const { return v_; }
-  friend F operator+(const F& a, const F& b) { F r(int(mpfr_get_prec(a.v_))); mpfr_add(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  friend F operator*(const F& a, const F& b) { F r(int(mpfr_get_prec(a.v_))); mpfr_mul(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  friend F operator/(const F& a, const F& b) { F r(int(mpfr_get_prec(a.v_))); mpfr_div(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  Rational q() const { Rational r; mpfr_get_q(r.get_mpq_t(), v_); return r; }
-  int sign() const { return mpfr_sgn(v_); }
+// MPFR numbers at kShadeOracleBits (the cone test: kShadeConeBits).
+using F = Mpfr<kShadeOracleBits>;
 
- private:
-  mpfr_t v_;
-};
-
-F fsqrt(const F& a) { F r(int(mpfr_get_prec(a.get()))); mpfr_sqrt(r.get(), a.get(), MPFR_RNDN); return r; }
+F fsqrt(const F& a) { return F::fn(mpfr_sqrt, a); }
 F fpow(const F& a, const Rational& s) {
-  F r(int(mpfr_get_prec(a.get())));
-  if (sgn(s) == 0) { mpfr_set_ui(r.get(), 1, MPFR_RNDN); return r; }  // x^0 = 1, also 0^0 (C's pow)
-  const F e(s, int(mpfr_get_prec(a.get())));
-  mpfr_pow(r.get(), a.get(), e.get(), MPFR_RNDN);
-  return r;
+  if (sgn(s) == 0) return F(1, a.bits());  // x^0 = 1, also 0^0 (C's pow)
+  return F::fn2(mpfr_pow, a, F(s, a.bits()));
 }
 
 Rational dotq(const Vec3<Rational>& a, const Vec3<Rational>& b) { return Rational(a.x * b.x + a.y * b.y + a.z * b.z); }
@@ -46,14 +26,10 @@ F fdot(const std::array<F, 3>& a, const std::array<F, 3>& b) { return a[0] * b[0
 // d.s/(|d||s|) >= cos(cut-off), ties (within 2^-(bits - 24)) inside.
 bool in_cone(const Vec3<Rational>& d, const Vec3<Rational>& s, const Rational& cutoff) {
   const int bits = kShadeConeBits;
-  F cosine(cutoff, bits), pi(bits);
-  mpfr_const_pi(pi.get(), MPFR_RNDN);
-  cosine = cosine * pi / F(Rational(180), bits);
-  mpfr_cos(cosine.get(), cosine.get(), MPFR_RNDN);
+  const F cosine = F::fn(mpfr_cos, F(cutoff, bits) * F::pi(bits) / F(Rational(180), bits));
   const F c = F(dotq(d, s), bits) / fsqrt(F(Rational(dotq(d, d) * dotq(s, s)), bits));
-  F diff(bits);
-  mpfr_sub(diff.get(), c.get(), cosine.get(), MPFR_RNDN);
-  F tol(bits);
+  const F diff = c - cosine;
+  F tol(0, bits);
   mpfr_set_ui_2exp(tol.get(), 1, -(bits - 24), MPFR_RNDN);
   if (mpfr_cmpabs(diff.get(), tol.get()) <= 0) return true;
   return diff.sign() > 0;

@@ -1,15 +1,11 @@
 #include "lines_oracle.hpp"
-#include <CGAL/Gmpq.h>
 #include <algorithm>
 #include <optional>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
-using Q = CGAL::Gmpq;
-
-Q q(const Rational& r) { return Q(r.get_mpq_t()); }
-Rational r(const Q& x) { return Rational(x.mpq()); }
 std::int64_t floor_q(const Q& x) { return num::floor_int(r(x)); }
 const Q kHalf(1, 2);
 

@@ -1,19 +1,11 @@
 #include "rays_oracle.hpp"
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/determinant.h>
 #include <mpfr.h>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
-using Q = CGAL::Gmpq;
-using K = CGAL::Simple_cartesian<Q>;
-using P3 = K::Point_3;
-
-Q q(const Rational& r) { return Q(r.get_mpq_t()); }
-Rational r(const Q& x) { return Rational(x.mpq()); }
-P3 pt(const Vec3<Rational>& v) { return P3(q(v.x), q(v.y), q(v.z)); }
 Vec3<Rational> add(const Vec3<Rational>& a, const Vec3<Rational>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 Vec3<Rational> sub(const Vec3<Rational>& a, const Vec3<Rational>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 Q dotq(const Vec3<Rational>& a, const Vec3<Rational>& b) { return q(a.x) * q(b.x) + q(a.y) * q(b.y) + q(a.z) * q(b.z); }
@@ -55,7 +47,7 @@ Rational triple(const Vec3<Rational>& a, const Vec3<Rational>& b, const Vec3<Rat
 }
 
 int orient3d(const Vec3<Rational>& p, const Vec3<Rational>& q1, const Vec3<Rational>& r1, const Vec3<Rational>& s) {
-  return static_cast<int>(CGAL::orientation(pt(p), pt(q1), pt(r1), pt(s)));
+  return static_cast<int>(CGAL::orientation(point(p), point(q1), point(r1), point(s)));
 }
 
 RayResult ray_triangle(const Vec3<Rational>& o, const Vec3<Rational>& d, const std::array<Vec3<Rational>, 3>& v) {

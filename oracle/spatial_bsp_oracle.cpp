@@ -1,19 +1,15 @@
 #include "spatial_bsp_oracle.hpp"
-#include <CGAL/Gmpq.h>
-#include <CGAL/Simple_cartesian.h>
 #include <algorithm>
 #include <utility>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
-using Q = CGAL::Gmpq;
-using K = CGAL::Simple_cartesian<Q>;
+using K = ExactKernel;
 using P2 = K::Point_2;
 using V2 = K::Vector_2;
 
-Q q(const Rational& r) { return Q(r.get_mpq_t()); }
-P2 pt(const Vec2<Rational>& v) { return {q(v.x), q(v.y)}; }
 int orient(const P2& p, const P2& r, const P2& s) { return static_cast<int>(CGAL::orientation(p, r, s)); }
 int turn(const V2& u, const V2& v) { return static_cast<int>(CGAL::orientation(u, v)); }  // sign of u x v
 std::string show(const Vec2<Rational>& p) { return "(" + p.x.get_str() + ", " + p.y.get_str() + ")"; }
@@ -64,8 +60,8 @@ std::string fragments_cover(const std::vector<Seg2Q>& segs, const std::vector<Fr
     const std::string at = "fragment " + std::to_string(f);
     if (g.seg < 0 || static_cast<std::size_t>(g.seg) >= segs.size()) return at + ": no segment " + std::to_string(g.seg);
     const Seg2Q& s = segs[static_cast<std::size_t>(g.seg)];
-    const P2 sa = pt(s.a), sb = pt(s.b);
-    if (orient(sa, sb, pt(g.a)) != 0 || orient(sa, sb, pt(g.b)) != 0)
+    const P2 sa = point(s.a), sb = point(s.b);
+    if (orient(sa, sb, point(g.a)) != 0 || orient(sa, sb, point(g.b)) != 0)
       return at + " " + show(g.a) + "-" + show(g.b) + " is off the line of segment " + std::to_string(g.seg);
     if (g.a == g.b) return at + ": zero length at " + show(g.a);
     const Vec2<Rational> d = s.b - s.a;
@@ -101,12 +97,12 @@ OrderCheck painter_order(const Vec2<Rational>& eye_q, const std::vector<Fragment
     out.first = "the order is not a permutation of the " + std::to_string(frags.size()) + " fragments";
     return out;
   }
-  const P2 eye = pt(eye_q);
+  const P2 eye = point(eye_q);
   std::vector<Seen> seen;
   seen.reserve(order.size());
   for (std::int32_t f : order) {
     Seen s;
-    s.a = pt(frags[static_cast<std::size_t>(f)].a), s.b = pt(frags[static_cast<std::size_t>(f)].b);
+    s.a = point(frags[static_cast<std::size_t>(f)].a), s.b = point(frags[static_cast<std::size_t>(f)].b);
     const int o = orient(eye, s.a, s.b);
     s.edge_on = o == 0;
     s.u = s.a - eye, s.v = s.b - eye;

@@ -1,20 +1,14 @@
 #include "spatial_oracle.hpp"
-#include <CGAL/Gmpq.h>
 #include <CGAL/Intersections_2/Iso_rectangle_2_Segment_2.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Segment_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Triangle_3.h>
-#include <CGAL/Simple_cartesian.h>
 #include <algorithm>
+#include "cgal_bridge.hpp"
 
 namespace sw::oracle {
 namespace {
 
-using Q = CGAL::Gmpq;
-using K = CGAL::Simple_cartesian<Q>;
-
-Q q(const Rational& r) { return Q(r.get_mpq_t()); }
-K::Point_3 pt(const Vec3<Rational>& v) { return {q(v.x), q(v.y), q(v.z)}; }
-K::Point_2 pt(const Vec2<Rational>& v) { return {q(v.x), q(v.y)}; }
+using K = ExactKernel;
 
 template <class P> Rational dist2(const P& a, const P& b, int dim) {
   Rational s = 0;
@@ -50,8 +44,8 @@ std::vector<std::pair<Rational, std::int32_t>> k_nearest(const std::vector<Vec2<
 }
 
 bool triangle_meets_box(const Triangle3& t, const Vec3<Rational>& lo, const Vec3<Rational>& hi) {
-  const K::Iso_cuboid_3 box(pt(lo), pt(hi));
-  const K::Point_3 a = pt(t[0]), b = pt(t[1]), c = pt(t[2]);
+  const K::Iso_cuboid_3 box(point(lo), point(hi));
+  const K::Point_3 a = point(t[0]), b = point(t[1]), c = point(t[2]);
   if (!CGAL::collinear(a, b, c)) return CGAL::do_intersect(K::Triangle_3(a, b, c), box);
   // A zero-area triangle is the segment between its two farthest vertices, or a point.
   if (a == b && b == c) return !box.has_on_unbounded_side(a);
@@ -62,13 +56,13 @@ bool triangle_meets_box(const Triangle3& t, const Vec3<Rational>& lo, const Vec3
 }
 
 bool segment_meets_box(const Vec2<Rational>& a, const Vec2<Rational>& b, const Vec2<Rational>& lo, const Vec2<Rational>& hi) {
-  const K::Iso_rectangle_2 box(pt(lo), pt(hi));
-  if (a == b) return !box.has_on_unbounded_side(pt(a));
-  return CGAL::do_intersect(K::Segment_2(pt(a), pt(b)), box);
+  const K::Iso_rectangle_2 box(point(lo), point(hi));
+  if (a == b) return !box.has_on_unbounded_side(point(a));
+  return CGAL::do_intersect(K::Segment_2(point(a), point(b)), box);
 }
 
 int orient2d(const Vec2<Rational>& p, const Vec2<Rational>& q, const Vec2<Rational>& r) {
-  return static_cast<int>(CGAL::orientation(pt(p), pt(q), pt(r)));
+  return static_cast<int>(CGAL::orientation(point(p), point(q), point(r)));
 }
 
 }  // namespace sw::oracle

@@ -161,7 +161,7 @@ template <class Num> int max_axis(const Vec3<Num>& v) {
 // polynomials are written).
 template <class Num, std::size_t N> Num polynomial(const std::array<Num, N>& c, const Num& x) {
   Num y = c[0];
-  for (std::size_t k = 1; k < N; ++k) y = Num(y * x + c[k]);
+  for (std::size_t k = 1; k < N; ++k) y = y * x + c[k];
   return y;
 }
 

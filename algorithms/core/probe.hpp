@@ -12,6 +12,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 #include "core/emitters.hpp"
 #include "core/number.hpp"
@@ -40,6 +41,27 @@ template <class P>
 concept StepProbe = requires {
   { P::on } -> std::convertible_to<bool>;
 } && (!P::on || requires(P& p) { p.step(std::uint32_t{1}, StepKind::init); });
+
+// A nested listing for the lifetime of a scope: `const auto call = nested<Refract>(probe);` enters
+// Refract's listing (probe.enter(id, listing)) and leaves it when `call` goes out of scope, so that
+// every way out of the scope (a return, an exception) leaves exactly once. The steps between are
+// the callee's. For a probe that is off, nested() returns an empty object: nothing is evaluated.
+template <class Probe> class [[nodiscard]] NestedScope {
+ public:
+  NestedScope(Probe& probe, std::string_view id, const Listing& listing) : probe_(probe) { probe_.enter(id, listing); }
+  NestedScope(const NestedScope&) = delete;
+  NestedScope& operator=(const NestedScope&) = delete;
+  ~NestedScope() { probe_.leave(); }
+
+ private:
+  Probe& probe_;
+};
+struct [[maybe_unused]] NoNestedScope {};
+
+template <class Algo, class Probe> [[nodiscard]] auto nested(Probe& probe) {
+  if constexpr (Probe::on) return NestedScope<Probe>(probe, Algo::id, Algo::listing());
+  else return NoNestedScope{};
+}
 
 // Steps as stored: ranges into the shared variable and geometry arrays.
 struct StepRecord {

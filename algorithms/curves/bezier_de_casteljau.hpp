@@ -44,12 +44,9 @@ void subdivide(const std::array<Vec2<Num>, 4>& p, int level, std::int64_t k, std
   using L = BezierDeCasteljau;
   if constexpr (Probe::on) probe.step(L::call, StepKind::visit).idx("level", level).idx("k", k).geo_list(GeoKind::polyline, std::span(p));
   if (level == 0) {
-    if constexpr (Probe::on) {
-      probe.step(L::leaf, StepKind::advance).idx("level", level).idx("k", k).segment(p[0], p[3]);
-      probe.enter(lines::DdaLine::id, lines::DdaLine::listing());
-    }
+    if constexpr (Probe::on) probe.step(L::leaf, StepKind::advance).idx("level", level).idx("k", k).segment(p[0], p[3]);
+    const auto call = nested<lines::DdaLine>(probe);
     (void)lines::dda_line<Num>(p[0], p[3], out, probe);
-    if constexpr (Probe::on) probe.leave();
     return;
   }
   const Num half(0.5);

@@ -22,8 +22,8 @@ template <class Num> struct Bezier {
 
 // B(t) in Bernstein form: (1-t)^3 P0 + 3 (1-t)^2 t P1 + 3 (1-t) t^2 P2 + t^3 P3.
 template <class Num> Vec2<Num> bezier_at(const std::array<Vec2<Num>, 4>& p, const Num& t) {
-  const Num s = Num(Num(1) - t);
-  const std::array<Num, 4> w = {Num(s * s * s), Num(Num(3) * s * s * t), Num(Num(3) * s * t * t), Num(t * t * t)};
+  const Num s = Num(1) - t;
+  const std::array<Num, 4> w = {s * s * s, Num(3) * s * s * t, Num(3) * s * t * t, t * t * t};
   Vec2<Num> q{Num(0), Num(0)};
   for (int i = 0; i < 4; ++i) q = q + w[i] * p[i];
   return q;
@@ -47,11 +47,11 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& probe) {
   using L = BezierForwardDiff;
   std::array<Vec2<Num>, 4> q;
-  for (int k = 0; k < 4; ++k) q[k] = bezier_at(b.p, Num(Num(k) / Num(b.n)));
+  for (int k = 0; k < 4; ++k) q[k] = bezier_at(b.p, Num(k) / Num(b.n));
   if constexpr (Probe::on) {
     std::vector<Vec2<Num>> curve;  // the curve itself, for the canvas: 8 points per segment, at most 512
     const std::int64_t m = std::min<std::int64_t>(8 * b.n, 512);
-    for (std::int64_t k = 0; k <= m; ++k) curve.push_back(bezier_at(b.p, Num(Num(k) / Num(m))));
+    for (std::int64_t k = 0; k <= m; ++k) curve.push_back(bezier_at(b.p, Num(k) / Num(m)));
     probe.step(L::samples, StepKind::init).vec("q0", q[0]).vec("q1", q[1]).vec("q2", q[2]).vec("q3", q[3]).geo_list(GeoKind::polyline, curve).keep();
   }
   const Vec2<Num> e0 = q[1] - q[0], e1 = q[2] - q[1], e2 = q[3] - q[2];
@@ -61,12 +61,11 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
   Vec2<Num> p = q[0];
   for (std::int64_t k = 0; k < b.n; ++k) {  // bounded: n is validated
     const Vec2<Num> next = p + d1;
-    if constexpr (Probe::on) {
-      probe.step(L::segment, StepKind::advance).idx("k", k).segment(p, next);
-      probe.enter(lines::DdaLine::id, lines::DdaLine::listing());
+    if constexpr (Probe::on) probe.step(L::segment, StepKind::advance).idx("k", k).segment(p, next);
+    {
+      const auto call = nested<lines::DdaLine>(probe);
+      (void)lines::dda_line<Num>(p, next, out, probe);
     }
-    (void)lines::dda_line<Num>(p, next, out, probe);
-    if constexpr (Probe::on) probe.leave();
     p = next;
     d1 = d1 + d2;
     d2 = d2 + d3;

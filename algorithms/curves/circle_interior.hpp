@@ -25,7 +25,7 @@ struct CircleInterior {
 
 template <NumberType Num, StepProbe Probe = NoProbe> void circle_interior(const CircleInput& c, std::vector<Pixel>& out, Probe& probe) {
   const Num r(c.r);
-  circle_octant_walk<CircleInterior, Num>(c, {Num(0), Num(Num(1) - Num(2) * r), Num(1), Num(2), Num(2)}, out, probe);
+  circle_octant_walk<CircleInterior, Num>(c, {Num(0), Num(1) - Num(2) * r, Num(1), Num(2), Num(2)}, out, probe);
 }
 
 }  // namespace sw::curves

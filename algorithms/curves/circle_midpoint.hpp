@@ -27,7 +27,7 @@ struct CircleMidpoint {
 
 template <NumberType Num, StepProbe Probe = NoProbe> void circle_midpoint(const CircleInput& c, std::vector<Pixel>& out, Probe& probe) {
   const Num r(c.r);
-  circle_octant_walk<CircleMidpoint, Num>(c, {Num(Num(1) - Num(4) * r), Num(Num(8) - Num(8) * r), Num(4), Num(8), Num(8)}, out, probe);
+  circle_octant_walk<CircleMidpoint, Num>(c, {Num(1) - Num(4) * r, Num(8) - Num(8) * r, Num(4), Num(8), Num(8)}, out, probe);
 }
 
 }  // namespace sw::curves

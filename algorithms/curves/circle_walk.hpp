@@ -54,8 +54,8 @@ void circle_octant_walk(const CircleInput& c, OctantStart<Num> s, std::vector<Pi
       for (int k = 0; k < n; ++k) st.pixel(img[k]);
     }
     ++y;
-    s.p = Num(s.p + s.py);
-    s.py = Num(s.py + s.pyy);
+    s.p = s.p + s.py;
+    s.py = s.py + s.pyy;
     if constexpr (Probe::on) probe.step(L::step_y, StepKind::advance).idx("y", y).num(L::kP, s.p).num(L::kPy, s.py);
     const bool inward = s.p > Num(0);
     if constexpr (Probe::on) {  // the two candidates on the row, coloured by the sign that decides between them
@@ -64,8 +64,8 @@ void circle_octant_walk(const CircleInput& c, OctantStart<Num> s, std::vector<Pi
     }
     if (inward) {
       ++x;
-      s.p = Num(s.p + s.px);
-      s.px = Num(s.px + s.pxx);
+      s.p = s.p + s.px;
+      s.px = s.px + s.pxx;
       if constexpr (Probe::on) probe.step(L::step_x, StepKind::advance).idx("x", x).num(L::kP, s.p).num(L::kPx, s.px);
     }
   }

@@ -48,24 +48,24 @@ inline std::int64_t& pixel_axis(Pixel& p, int axis) { return axis == 0 ? p.x : p
 // grad P at the pixel p, by direct evaluation of the two derivative polynomials.
 template <class Num> Vec2<Num> implicit_gradient(const ImplicitPoly<Num>& P, Pixel p) {
   const Num x(p.x), y(p.y);
-  const std::array<Num, 3> xp{Num(1), x, Num(x * x)}, yp{Num(1), y, Num(y * y)};
+  const std::array<Num, 3> xp{Num(1), x, x * x}, yp{Num(1), y, y * y};
   Vec2<Num> g{Num(0), Num(0)};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; i + j < 4; ++j) {
-      if (i > 0) g.x = Num(g.x + Num(Num(Num(i) * P.c[i][j]) * Num(xp[i - 1] * yp[j])));
-      if (j > 0) g.y = Num(g.y + Num(Num(Num(j) * P.c[i][j]) * Num(xp[i] * yp[j - 1])));
+      if (i > 0) g.x = g.x + Num(i) * P.c[i][j] * (xp[i - 1] * yp[j]);
+      if (j > 0) g.y = g.y + Num(j) * P.c[i][j] * (xp[i] * yp[j - 1]);
     }
   return g;
 }
 
 // Q(u, v) = P(u/2, v/2), directly: used only to start the difference table.
 template <class Num> Num implicit_q(const ImplicitPoly<Num>& P, std::int64_t u, std::int64_t v) {
-  const Num half = Num(Num(1) / Num(2)), x = Num(Num(u) * half), y = Num(Num(v) * half);
+  const Num half = Num(1) / Num(2), x = Num(u) * half, y = Num(v) * half;
   std::array<Num, 4> xp{Num(1)}, yp{Num(1)};
-  for (int k = 1; k < 4; ++k) xp[k] = Num(xp[k - 1] * x), yp[k] = Num(yp[k - 1] * y);
+  for (int k = 1; k < 4; ++k) xp[k] = xp[k - 1] * x, yp[k] = yp[k - 1] * y;
   Num s(0);
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; i + j < 4; ++j) s = Num(s + Num(P.c[i][j] * Num(xp[i] * yp[j])));
+    for (int j = 0; i + j < 4; ++j) s = s + P.c[i][j] * (xp[i] * yp[j]);
   return s;
 }
 
@@ -86,10 +86,10 @@ template <class Num> struct DiffTable {
       for (int j = 0; i + j < 4; ++j) t.d[i][j] = implicit_q(P, u + i, v + j);
     for (int j = 0; j < 4; ++j)
       for (int m = 1; m + j < 4; ++m)
-        for (int i = 3 - j; i >= m; --i) t.d[i][j] = Num(t.d[i][j] - t.d[i - 1][j]);
+        for (int i = 3 - j; i >= m; --i) t.d[i][j] = t.d[i][j] - t.d[i - 1][j];
     for (int m = 0; m < 4; ++m)
       for (int n = 1; m + n < 4; ++n)
-        for (int j = 3 - m; j >= n; --j) t.d[m][j] = Num(t.d[m][j] - t.d[m][j - 1]);
+        for (int j = 3 - m; j >= n; --j) t.d[m][j] = t.d[m][j] - t.d[m][j - 1];
     return t;
   }
   // One unit step along axis (0: u, 1: v) in direction s = +1 or -1. With e the step's unit
@@ -102,9 +102,9 @@ template <class Num> struct DiffTable {
       const int top = 2 - k;       // entries of order 0 .. top along the axis have a next order
       auto at = [&](int m) -> Num& { return axis == 0 ? d[m][k] : d[k][m]; };
       if (s > 0)
-        for (int m = 0; m <= top; ++m) at(m) = Num(at(m) + at(m + 1));
+        for (int m = 0; m <= top; ++m) at(m) = at(m) + at(m + 1);
       else
-        for (int m = top; m >= 0; --m) at(m) = Num(at(m) - at(m + 1));
+        for (int m = top; m >= 0; --m) at(m) = at(m) - at(m + 1);
     }
     (axis == 0 ? u : v) += s;
   }
@@ -157,7 +157,7 @@ WalkEnd implicit_curve(const ImplicitPoly<Num>& P, std::vector<Pixel>& out, Prob
       break;
     }
     // Walking along t, P < 0 lies on the left. a: 0 = x, 1 = y.
-    const Vec2<Num> t{Num(-g.y), g.x};
+    const Vec2<Num> t{-g.y, g.x};
     const Num ax = num::abs(t.x), ay = num::abs(t.y);
     const int a = ax > ay || (!(ay > ax) && num::sign(t.x) != num::sign(t.y)) ? 0 : 1, b = 1 - a;
     const int sa = num::sign(t[a]), sgb = num::sign(g[b]);
@@ -167,7 +167,7 @@ WalkEnd implicit_curve(const ImplicitPoly<Num>& P, std::vector<Pixel>& out, Prob
     Pixel m2{2 * p.x, 2 * p.y};
     pixel_axis(m2, a) += 2 * sa;
     pixel_axis(m2, b) += sb;
-    [[maybe_unused]] const auto half = [](std::int64_t w) { return Num(Num(w) / Num(2)); };  // x = u / 2
+    [[maybe_unused]] const auto half = [](std::int64_t w) { return Num(w) / Num(2); };  // x = u / 2
     if (!have_table) {
       T = DiffTable<Num>::at(P, m2.x, m2.y);
       have_table = true;

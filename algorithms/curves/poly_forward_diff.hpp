@@ -28,7 +28,7 @@ template <class Num> std::vector<Vec2<Num>> curve_samples(const Cubic<Num>& p) {
   const std::int64_t n = std::clamp<std::int64_t>(8 * (p.xe - p.xs), 1, 512);
   std::vector<Vec2<Num>> pts;
   for (std::int64_t k = 0; k <= n; ++k) {
-    const Num x = Num(Num(p.xs) + Num(Num(p.xe - p.xs) * Num(k)) / Num(n));
+    const Num x = Num(p.xs) + Num(p.xe - p.xs) * Num(k) / Num(n);
     pts.push_back({x, num::polynomial(p.c, x)});
   }
   return pts;
@@ -55,23 +55,23 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   using L = PolyForwardDiff;
   std::array<Num, 4> y;
-  for (int k = 0; k < 4; ++k) y[k] = num::polynomial(p.c, Num(Num(p.xs) + Num(k)));
+  for (int k = 0; k < 4; ++k) y[k] = num::polynomial(p.c, Num(p.xs) + Num(k));
   if constexpr (Probe::on)
     probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]).geo_list(GeoKind::polyline, curve_samples(p)).keep();
-  const Num e0 = Num(y[1] - y[0]), e1 = Num(y[2] - y[1]), e2 = Num(y[3] - y[2]);
-  Num d1 = e0, d2 = Num(e1 - e0);
-  const Num d3 = Num(Num(e2 - e1) - d2);
+  const Num e0 = y[1] - y[0], e1 = y[2] - y[1], e2 = y[3] - y[2];
+  Num d1 = e0, d2 = e1 - e0;
+  const Num d3 = e2 - e1 - d2;
   if constexpr (Probe::on) probe.step(L::table, StepKind::init).num("d1", d1).num("d2", d2).num("d3", d3);
   Num yv = y[0];
   std::int64_t x = p.xs;
   if constexpr (Probe::on) probe.step(L::start, StepKind::init).idx("x", x).num("y", yv);
   for (; x < p.xe; ++x) {  // bounded: xe - xs is validated
-    const Pixel px{x, num::floor_int(Num(yv + Num(0.5)))};
+    const Pixel px{x, num::floor_int(yv + Num(0.5))};
     out.push_back(px);
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("x", x).num("y", yv).idx("j", px.y).pixel(px).point(Vec2<Num>{Num(x), yv});
-    yv = Num(yv + d1);
-    d1 = Num(d1 + d2);
-    d2 = Num(d2 + d3);
+    yv = yv + d1;
+    d1 = d1 + d2;
+    d2 = d2 + d3;
     if constexpr (Probe::on) probe.step(L::step, StepKind::advance).idx("x", x + 1).num("y", yv).num("d1", d1).num("d2", d2);
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("x", x);

@@ -28,7 +28,7 @@ void poly_horner(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
       auto& st = probe.step(L::eval, StepKind::advance).idx("x", x).num("y", y);
       if (x == p.xs) st.geo_list(GeoKind::polyline, curve_samples(p)).keep();  // the exact curve, once
     }
-    const Pixel px{x, num::floor_int(Num(y + Num(0.5)))};
+    const Pixel px{x, num::floor_int(y + Num(0.5))};
     out.push_back(px);
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("x", x).idx("j", px.y).pixel(px).point(Vec2<Num>{Num(x), y});
   }

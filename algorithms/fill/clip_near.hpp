@@ -39,8 +39,8 @@ template <class Num> struct ClipPolygon {
 // The point P + t (Q - P), attributes included: attributes are linear in clip space.
 template <class Num> ClipVertex<Num> clip_lerp(const ClipVertex<Num>& p, const ClipVertex<Num>& q, const Num& t, std::size_t n) {
   ClipVertex<Num> r;
-  for (int a = 0; a < 4; ++a) r.c[a] = Num(p.c[a] + t * Num(q.c[a] - p.c[a]));
-  for (std::size_t a = 0; a < n; ++a) r.a[a] = Num(p.a[a] + t * Num(q.a[a] - p.a[a]));
+  for (int a = 0; a < 4; ++a) r.c[a] = p.c[a] + t * (q.c[a] - p.c[a]);
+  for (std::size_t a = 0; a < n; ++a) r.a[a] = p.a[a] + t * (q.a[a] - p.a[a]);
   return r;
 }
 
@@ -52,13 +52,13 @@ ClipPolygon<Num> clip_near(const ClipTriangle<Num>& t, Probe& probe) {
   const Num wn = w_near<Num>();
   // A kept corner's step: its clip coordinates, its attributes and where it lands on screen.
   [[maybe_unused]] auto corner = [&](auto& step, const ClipVertex<Num>& c, std::size_t k) {
-    const Vec2<Num> s{Num(c.c[0] / c.w()), Num(c.c[1] / c.w())};
+    const Vec2<Num> s{c.c[0] / c.w(), c.c[1] / c.w()};
     step.idx("k", std::int64_t(k)).list("c", std::span<const Num>(c.c)).list("c_attrs", std::span<const Num>(c.a.data(), t.n)).point(s).label("c").keep();
   };
   for (std::size_t e = 0; e < 3; ++e) {
     const ClipVertex<Num>& p = t.v[e];
     const ClipVertex<Num>& q = t.v[(e + 1) % 3];
-    const Num dp = Num(p.w() - wn), dq = Num(q.w() - wn);
+    const Num dp = p.w() - wn, dq = q.w() - wn;
     const bool keep = !(dp < Num(0));
     const bool cut = (dp < Num(0) && Num(0) < dq) || (Num(0) < dp && dq < Num(0));
     if constexpr (Probe::on) probe.step(L::clip_edge, StepKind::decide).idx("P", std::int64_t(e)).num("d_P", dp).num("d_Q", dq).idx("keep", keep).idx("cut", cut);
@@ -68,7 +68,7 @@ ClipPolygon<Num> clip_near(const ClipTriangle<Num>& t, Probe& probe) {
       ++out.k;
     }
     if (cut) {
-      const Num s = Num(dp / Num(dp - dq));
+      const Num s = dp / (dp - dq);
       out.c[out.k] = clip_lerp(p, q, s, t.n);
       if constexpr (Probe::on) corner(probe.step(L::clip_cut, StepKind::init).num("t", s), out.c[out.k], out.k);
       ++out.k;

@@ -84,11 +84,11 @@ ClippedSegment<Num> cohen_sutherland(Vec2<Num> p0, Vec2<Num> p1, const Vec2<Num>
     const Vec2<Num> d = p[1] - p[0];
     if (bit == kLeft || bit == kRight) {
       const Num x = bit == kLeft ? lo.x : hi.x;
-      p[k] = {x, Num(p[0].y + Num(d.y * Num(x - p[0].x)) / d.x)};
+      p[k] = {x, p[0].y + d.y * (x - p[0].x) / d.x};
       if constexpr (Probe::on) probe.step(L::cut_x, StepKind::advance).idx("k", k).idx("b", bit).num("x", p[k].x).num("y", p[k].y).point(p[k]).label("cut");
     } else {
       const Num y = bit == kBelow ? lo.y : hi.y;
-      p[k] = {Num(p[0].x + Num(d.x * Num(y - p[0].y)) / d.y), y};
+      p[k] = {p[0].x + d.x * (y - p[0].y) / d.y, y};
       if constexpr (Probe::on) probe.step(L::cut_y, StepKind::advance).idx("k", k).idx("b", bit).num("x", p[k].x).num("y", p[k].y).point(p[k]).label("cut");
     }
     c[k] = outcode(p[k], lo, hi);

@@ -1,7 +1,7 @@
 // Attributes across a triangle seen in perspective. The vertices are in clip space (x, y, z, w):
 // the screen position is (x/w, y/w). The triangle is first clipped against w = w_near
 // (clip_near.hpp), so nothing is ever divided by a w near zero or below it; the kept polygon is
-// cut into one or two triangles, each filled by the double DDA of triangle_dda.hpp under the
+// cut into one or two triangles, each filled by the double DDA (double_dda.hpp) under the
 // family's sample rule. perspective-interp carries a/w and 1/w, which are linear on screen, and
 // divides at each pixel (the implementor's guide's hyperbolic interpolation); affine-interp
 // carries a itself, which is linear on screen only when w is the same at every vertex.
@@ -18,7 +18,7 @@
 #include "core/number.hpp"
 #include "core/probe.hpp"
 #include "fill/clip_near.hpp"
-#include "fill/triangle_dda.hpp"
+#include "fill/double_dda.hpp"
 #include "fill/vary.hpp"
 
 namespace sw::fill {
@@ -75,74 +75,8 @@ struct AffineInterp {
 template <class Num> Vec3<Num> checker_texel(std::span<const Num> a) {
   double sum = std::floor(num::to_double(a[0]));
   if (a.size() > 1) sum += std::floor(num::to_double(a[1]));
-  if (std::fmod(std::fabs(sum), 2.0) == 0) return {Num(Num(7) / Num(8)), Num(Num(7) / Num(8)), Num(Num(3) / Num(4))};
-  return {Num(Num(1) / Num(4)), Num(Num(3) / Num(8)), Num(Num(5) / Num(8))};
-}
-
-// One projected triangle by the double DDA (as triangle_dda), plotting n attributes per pixel.
-template <bool Persp, class L, NumberType Num, StepProbe Probe>
-void interp_triangle(std::array<Vary<Num>, 3> v, std::size_t n, FillResult<Num>& out, Probe& probe) {
-  std::stable_sort(v.begin(), v.end(), [](const Vary<Num>& a, const Vary<Num>& b) { return a.p.y < b.p.y; });
-  const Vary<Num>&b = v[0], &m = v[1], &t = v[2];
-  if constexpr (Probe::on) {
-    const std::array<Vec2<Num>, 3> corners{b.p, m.p, t.p};
-    probe.step(L::sort, StepKind::init).vec("b", b.p).vec("m", m.p).vec("t", t.p).geo_list(GeoKind::polygon, std::span(corners));
-  }
-  if (!(b.p.y < t.p.y)) return;  // no height: no row
-  auto start = [](const Vary<Num>& p0, const Vary<Num>& p1) {
-    const Vary<Num> dq = (p1 - p0) / Num(p1.p.y - p0.p.y);
-    return std::pair{p0 + Num(Num(num::ceil_int(p0.p.y)) - p0.p.y) * dq, dq};
-  };
-  auto record_edge = [&](auto line, const char* name, const Vary<Num>& q, const Vary<Num>& dq, const Vary<Num>& p0, const Vary<Num>& p1) {
-    if constexpr (Probe::on) probe.step(line, StepKind::init).vec("q", q.p).list("q_h", q.attrs()).vec("dq", dq.p).list("dq_h", dq.attrs()).segment(p0.p, p1.p).label(name).point(q.p).label("q");
-  };
-  auto long_edge = start(b, t);
-  auto& qc = long_edge.first;  // references, not a structured binding: the lambdas below capture them
-  const auto& dqc = long_edge.second;
-  record_edge(L::long_edge, "c", qc, dqc, b, t);
-  auto span = [&](Vary<Num> l, Vary<Num> r) {
-    if (r.p.x < l.p.x) std::swap(l, r);
-    if (!(l.p.x < r.p.x)) {
-      if constexpr (Probe::on) probe.step(L::span_start, StepKind::decide).num("l_x", l.p.x).num("r_x", r.p.x).idx("empty", 1);
-      return;
-    }
-    const Vary<Num> ds = (r - l) / Num(r.p.x - l.p.x);
-    Vary<Num> s = l + Num(Num(num::ceil_int(l.p.x)) - l.p.x) * ds;
-    if constexpr (Probe::on) probe.step(L::span_start, StepKind::init).num("l_x", l.p.x).num("r_x", r.p.x).idx("empty", 0).vec("s", s.p).list("ds_h", ds.attrs()).segment(l.p, r.p).label("span");
-    const std::int64_t bound = num::ceil_int(r.p.x) - num::floor_int(l.p.x) + 2;  // the samples in [l_x, r_x), and a stall pass
-    for (std::int64_t k = 0; k < bound && s.p.x < r.p.x; ++k) {
-      const Pixel px{num::floor_int(Num(s.p.x + Num(0.5))), num::floor_int(Num(s.p.y + Num(0.5)))};
-      std::array<Num, kMaxAttrs> a{};
-      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? Num(s.a[c] / s.a[n]) : s.a[c];
-      out.pixels.push_back(px);
-      out.values.insert(out.values.end(), a.begin(), a.begin() + n);
-      if constexpr (Probe::on) {
-        auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("h", s.attrs());
-        const std::span<const Num> vals(a.data(), n);
-        st.list("values", vals).colour("texel", checker_texel<Num>(vals)).pixel(px).point(s.p).label("s");
-      }
-      s = s + ds;
-      if constexpr (Probe::on) probe.step(L::span_step, StepKind::advance).vec("s", s.p).point(s.p).label("s");
-    }
-  };
-  auto half = [&](auto edge_line, auto span_line, auto step_line, const char* name, const char* qname, const Vary<Num>& p0, const Vary<Num>& p1) {
-    if (!(p0.p.y < p1.p.y)) {
-      if constexpr (Probe::on) probe.step(edge_line, StepKind::decide).idx("flat", 1);
-      return;
-    }
-    auto [q, dq] = start(p0, p1);
-    record_edge(edge_line, name, q, dq, p0, p1);
-    const std::int64_t bound = num::ceil_int(p1.p.y) - num::floor_int(p0.p.y) + 2;
-    for (std::int64_t k = 0; k < bound && q.p.y < p1.p.y; ++k) {
-      if constexpr (Probe::on) probe.step(span_line, StepKind::visit).vec(qname, q.p).vec("q_c", qc.p).segment(q.p, qc.p).label("row");
-      span(q, qc);
-      q = q + dq;
-      qc = qc + dqc;
-      if constexpr (Probe::on) probe.step(step_line, StepKind::advance).vec(qname, q.p).vec("q_c", qc.p);
-    }
-  };
-  half(L::lower_edge, L::lower_span, L::lower_step, "a", "q_a", b, m);  // lower_rows, upper_rows: loop headers
-  half(L::upper_edge, L::upper_span, L::upper_step, "e", "q_e", m, t);
+  if (std::fmod(std::fabs(sum), 2.0) == 0) return {Num(7) / Num(8), Num(7) / Num(8), Num(3) / Num(4)};
+  return {Num(1) / Num(4), Num(3) / Num(8), Num(5) / Num(8)};
 }
 
 // The whole algorithm: clip, cut into triangles, project, fill each, merge the rows.
@@ -153,7 +87,7 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
   const ClipPolygon<Num> poly = clip_near<L>(tri, probe);
   if constexpr (Probe::on) {
     std::array<Vec2<Num>, 4> screen;
-    for (std::size_t k = 0; k < poly.k; ++k) screen[k] = {Num(poly.c[k].c[0] / poly.c[k].w()), Num(poly.c[k].c[1] / poly.c[k].w())};
+    for (std::size_t k = 0; k < poly.k; ++k) screen[k] = {poly.c[k].c[0] / poly.c[k].w(), poly.c[k].c[1] / poly.c[k].w()};
     probe.step(L::fan, StepKind::init).idx("corners", std::int64_t(poly.k)).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(screen.data(), poly.k)).keep();
   }
   std::vector<std::size_t> firsts;  // where each triangle's pixels start
@@ -162,10 +96,10 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
     const std::array<std::size_t, 3> idx{0, f + 1, f + 2};
     for (int k = 0; k < 3; ++k) {
       const ClipVertex<Num>& c = poly.c[idx[k]];
-      const Num q = Num(Num(1) / c.w());
-      h[k].p = {Num(c.c[0] * q), Num(c.c[1] * q)};
+      const Num q = Num(1) / c.w();
+      h[k].p = {c.c[0] * q, c.c[1] * q};
       h[k].n = Persp ? n + 1 : n;
-      for (std::size_t a = 0; a < n; ++a) h[k].a[a] = Persp ? Num(c.a[a] * q) : c.a[a];
+      for (std::size_t a = 0; a < n; ++a) h[k].a[a] = Persp ? c.a[a] * q : c.a[a];
       if constexpr (Persp) h[k].a[n] = q;
     }
     if constexpr (Probe::on) {
@@ -175,7 +109,18 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
       for (int k = 0; k < 3; ++k) st.vec(sn[k], h[k].p).list(hn[k], h[k].attrs());
     }
     firsts.push_back(out.pixels.size());
-    interp_triangle<Persp, L>(h, n, out, probe);
+    // The triangle by the double DDA, plotting the n attributes at each pixel (perspective: h / q).
+    double_dda<L, Dp0::sample>(h, Screen{}, {"q_h", "dq_h", "ds_h", false, false}, out, probe, [&](const Pixel& px, const Vary<Num>& s) {
+      std::array<Num, kMaxAttrs> a{};
+      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? s.a[c] / s.a[n] : s.a[c];
+      out.pixels.push_back(px);
+      out.values.insert(out.values.end(), a.begin(), a.begin() + n);
+      if constexpr (Probe::on) {
+        auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("h", s.attrs());
+        const std::span<const Num> vals(a.data(), n);
+        st.list("values", vals).colour("texel", checker_texel<Num>(vals)).pixel(px).point(s.p).label("s");
+      }
+    });
   }
   if (firsts.size() == 2 && firsts[1] > firsts[0] && firsts[1] < out.pixels.size()) {  // two triangles: merge by (j, i)
     std::vector<std::size_t> order(out.pixels.size());

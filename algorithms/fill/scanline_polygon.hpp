@@ -65,9 +65,9 @@ void scanline_polygon(const Polygon<Num>& poly, std::vector<Pixel>& out, Probe& 
       if (p.y == q.y) continue;
       const Vec2<Num>& lo = p.y < q.y ? p : q;
       const Vec2<Num>& hi = p.y < q.y ? q : p;
-      const Num dx = Num((hi.x - lo.x) / (hi.y - lo.y));
+      const Num dx = (hi.x - lo.x) / (hi.y - lo.y);
       const std::int64_t row = num::ceil_int(lo.y);
-      table.push_back({row, Num(lo.x + (Num(row) - lo.y) * dx), dx, hi.y, p.y < q.y ? 1 : -1});
+      table.push_back({row, lo.x + (Num(row) - lo.y) * dx, dx, hi.y, p.y < q.y ? 1 : -1});
       if constexpr (Probe::on) probe.step(L::bucket, StepKind::init).idx("row", row).num("x", table.back().x).num("dx", dx).num("y_high", hi.y).idx("dir", table.back().dir).segment(lo, hi).label(p.y < q.y ? "up" : "down").keep();
     }
   }
@@ -110,7 +110,7 @@ void scanline_polygon(const Polygon<Num>& poly, std::vector<Pixel>& out, Probe& 
       for (std::int64_t i = i0; i <= i1; ++i) out.push_back({i, j});
       if constexpr (Probe::on) probe.step(L::fill, StepKind::plot).num("x_l", active[k].x).num("x_r", active[k + 1].x).span(j, i0, i1);
     }
-    for (auto& e : active) e.x = Num(e.x + e.dx);
+    for (auto& e : active) e.x = e.x + e.dx;
     j = active.empty() && next < table.size() ? table[next].row : j + 1;
     if constexpr (Probe::on) {
       const auto x = xs();

@@ -33,7 +33,7 @@ struct SutherlandHodgman {
 
 // d(v) for the clip edge a -> b with orientation o: o times the cross product (b - a) x (v - a).
 template <class Num> Num inner_side(const Num& o, const Vec2<Num>& a, const Vec2<Num>& b, const Vec2<Num>& v) {
-  return Num(o * Num(Num(Num(b.x - a.x) * Num(v.y - a.y)) - Num(Num(b.y - a.y) * Num(v.x - a.x))));
+  return o * ((b.x - a.x) * (v.y - a.y) - (b.y - a.y) * (v.x - a.x));
 }
 
 // Clips `subject` (any closed polygon, at least one vertex) to `clip` (convex, winding once, either
@@ -47,7 +47,7 @@ std::vector<Vec2<Num>> sutherland_hodgman(const std::vector<Vec2<Num>>& subject,
   for (std::size_t k = 0; k < m; ++k) {
     const Vec2<Num>& a = clip[k];
     const Vec2<Num>& b = clip[(k + 1) % m];
-    twice_area = Num(twice_area + Num(Num(a.x * b.y) - Num(a.y * b.x)));
+    twice_area = twice_area + (a.x * b.y - a.y * b.x);
   }
   const int o_sign = twice_area < Num(0) ? -1 : 1;  // a rounded area of 0 counts as counter-clockwise
   const Num o(o_sign);
@@ -69,7 +69,7 @@ std::vector<Vec2<Num>> sutherland_hodgman(const std::vector<Vec2<Num>>& subject,
       const Num d_p = inner_side(o, a, b, p);
       if constexpr (Probe::on) probe.step(L::side, StepKind::decide).num("d_s", d_s).num("d_p", d_p).point(p).label("p").value(d_p);
       if ((d_s < Num(0) && Num(0) < d_p) || (d_p < Num(0) && Num(0) < d_s)) {
-        const Num t = Num(d_s / Num(d_s - d_p));
+        const Num t = d_s / (d_s - d_p);
         out.push_back(*s + t * (p - *s));
         if constexpr (Probe::on) probe.step(L::cross, StepKind::plot).num("t", t).point(out.back()).label("crossing");
       }

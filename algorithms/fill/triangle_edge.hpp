@@ -46,7 +46,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe) {
   using L = TriangleEdge;
   Vec2<Num> &a = tri.v[0], &b = tri.v[1], &c = tri.v[2];
-  const Num area2 = Num((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  const Num area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (area2 < Num(0)) std::swap(b, c);
   if constexpr (Probe::on) {
     const std::array<Vec2<Num>, 3> corners{a, b, c};
@@ -61,8 +61,8 @@ void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe)
   for (int k = 0; k < 3; ++k) {
     const Vec2<Num>& p = tri.v[k];
     const Vec2<Num>& q = tri.v[(k + 1) % 3];
-    di[k] = Num(-(q.y - p.y) * tri.unit);
-    dj[k] = Num((q.x - p.x) * tri.unit);
+    di[k] = -(q.y - p.y) * tri.unit;
+    dj[k] = (q.x - p.x) * tri.unit;
     tie_inside[k] = q.y < p.y || (q.y == p.y && p.x < q.x);
     if constexpr (Probe::on) {
       probe.step(L::edges, StepKind::init).idx("k", k).num("dE_di", di[k]).num("dE_dj", dj[k]).segment(p, q).label(kEdgeNames[k]).keep();
@@ -80,7 +80,7 @@ void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe)
     for (int k = 0; k < 3; ++k) {
       const Vec2<Num>& p = tri.v[k];
       const Vec2<Num>& q = tri.v[(k + 1) % 3];
-      e[k] = Num((q.x - p.x) * (Num(j) * tri.unit - p.y) - (q.y - p.y) * (Num(i0) * tri.unit - p.x));
+      e[k] = (q.x - p.x) * (Num(j) * tri.unit - p.y) - (q.y - p.y) * (Num(i0) * tri.unit - p.x);
     }
     if constexpr (Probe::on) probe.step(L::row_start, StepKind::advance).idx("j", j).num("E0", e[0]).num("E1", e[1]).num("E2", e[2]);
     for (std::int64_t i = i0; i <= i1; ++i) {
@@ -91,7 +91,7 @@ void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe)
         auto& s = probe.step(L::test, inside ? StepKind::plot : StepKind::decide).idx("i", i).idx("j", j).num("E0", e[0]).num("E1", e[1]).num("E2", e[2]).idx("inside", inside);
         if (inside) s.pixel(Pixel{i, j});
       }
-      for (int k = 0; k < 3; ++k) e[k] = Num(e[k] + di[k]);
+      for (int k = 0; k < 3; ++k) e[k] = e[k] + di[k];
       if constexpr (Probe::on) probe.step(L::step, StepKind::advance).num("E0", e[0]).num("E1", e[1]).num("E2", e[2]);
     }
   }

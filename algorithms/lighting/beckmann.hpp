@@ -27,9 +27,9 @@ struct Beckmann {
 
 // D at c = n.h > 0, recorded on listing L's `distribution` line.
 template <class L, NumberType Num, StepProbe Probe> Num beckmann_step(const Num& c, const Num& m, Probe& probe) {
-  const Num c2 = Num(c * c), m2 = Num(m * m);
-  const Num t2 = Num(Num(Num(1) - c2) / c2);
-  const Num D = Num(num::exp(Num(-(t2 / m2))) / Num(num::pi<Num>() * m2 * c2 * c2));
+  const Num c2 = c * c, m2 = m * m;
+  const Num t2 = (Num(1) - c2) / c2;
+  const Num D = num::exp(-(t2 / m2)) / (num::pi<Num>() * m2 * c2 * c2);
   if constexpr (Probe::on) probe.step(L::distribution, StepKind::advance).num("t2", t2).num("D", D);
   return D;
 }
@@ -39,7 +39,7 @@ template <NumberType Num, StepProbe Probe> Num beckmann_term(const Frame<Num>& f
   Num c;
   (void)half_step<Beckmann>(f, c, probe);
   const Num D = beckmann_step<Beckmann>(c, p.m, probe);
-  const Num s = Num(num::pi<Num>() * D / Num(Num(4) * f.ne));
+  const Num s = num::pi<Num>() * D / (Num(4) * f.ne);
   if constexpr (Probe::on) probe.step(Beckmann::term, StepKind::done).num("s", s);
   return s;
 }

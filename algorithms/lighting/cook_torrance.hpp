@@ -27,15 +27,15 @@ struct CookTorrance {
 
 // Fresnel's reflectance of unpolarised light at cos(theta) = c > 0 and relative index ior >= 1.
 template <class Num> Num fresnel_exact(const Num& c, const Num& ior) {
-  const Num g = num::sqrt_of(Num(ior * ior + c * c - Num(1)));
-  const Num gm = Num(g - c), gp = Num(g + c);
-  const Num a = Num(c * gp - Num(1)), b = Num(c * gm + Num(1));
-  return Num(Num(gm * gm) / Num(Num(2) * gp * gp) * Num(Num(1) + Num(a * a) / Num(b * b)));
+  const Num g = num::sqrt_of(ior * ior + c * c - Num(1));
+  const Num gm = g - c, gp = g + c;
+  const Num a = c * gp - Num(1), b = c * gm + Num(1);
+  return gm * gm / (Num(2) * gp * gp) * (Num(1) + a * a / (b * b));
 }
 template <class Num> Num fresnel_schlick(const Num& c, const Num& ior) {
-  const Num r = Num(Num(ior - Num(1)) / Num(ior + Num(1))), f0 = Num(r * r);
-  const Num u = Num(Num(1) - c), u2 = Num(u * u);
-  return Num(f0 + Num(Num(1) - f0) * u2 * u2 * u);
+  const Num r = (ior - Num(1)) / (ior + Num(1)), f0 = r * r;
+  const Num u = Num(1) - c, u2 = u * u;
+  return f0 + (Num(1) - f0) * u2 * u2 * u;
 }
 
 // Needs lit and seen (frame_term decides).
@@ -55,12 +55,12 @@ template <NumberType Num, StepProbe Probe> Num cook_torrance_term(const Frame<Nu
   }
   Num G(1);
   if (p.shadowing) {
-    const Num ge = Num(Num(2) * c * f.ne / eh), gl = Num(Num(2) * c * f.nl / eh);
+    const Num ge = Num(2) * c * f.ne / eh, gl = Num(2) * c * f.nl / eh;
     G = ge < G ? ge : G;
     G = gl < G ? gl : G;
     if constexpr (Probe::on) probe.step(L::geometry, StepKind::decide).num("G", G);
   }
-  const Num s = Num(num::pi<Num>() * D * F * G / Num(Num(4) * f.ne));
+  const Num s = num::pi<Num>() * D * F * G / (Num(4) * f.ne);
   if constexpr (Probe::on) probe.step(L::term, StepKind::done).num("s", s);
   return s;
 }

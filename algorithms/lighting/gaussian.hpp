@@ -27,8 +27,8 @@ template <NumberType Num, StepProbe Probe> Num gaussian_term(const Frame<Num>& f
   (void)half_step<Gaussian>(f, c, probe);
   const Num alpha = num::acos(c);
   if constexpr (Probe::on) probe.step(Gaussian::angle, StepKind::advance).num("alpha", alpha);
-  const Num q = Num(alpha / p.m);
-  const Num s = num::exp(Num(-(q * q)));
+  const Num q = alpha / p.m;
+  const Num s = num::exp(-(q * q));
   if constexpr (Probe::on) probe.step(Gaussian::term, StepKind::done).num("s", s);
   return s;
 }

@@ -48,7 +48,7 @@ struct GouraudVsPhong {
 };
 
 template <class Num> Vec3<Num> blend(const std::array<Num, 3>& b, const std::array<Vec3<Num>, 3>& v) {
-  return Num(b[0]) * v[0] + Num(b[1]) * v[1] + Num(b[2]) * v[2];
+  return b[0] * v[0] + b[1] * v[1] + b[2] * v[2];
 }
 
 // Preconditions (validated): the vertex normals are not 0, the triangle's box is small (the runtime
@@ -59,25 +59,22 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
   auto shade_at = [&](const Vec3<Num>& p, const Vec3<Num>& n) -> Vec3<Num> {
     ShadeScene<Num> s = t.scene;
     s.p = p, s.n = n;
-    if constexpr (Probe::on) probe.enter(Shade::id, Shade::listing());
-    const Vec3<Num> c = shade(s, probe).rgb;
-    if constexpr (Probe::on) probe.leave();
-    return c;
+    const auto call = nested<Shade>(probe);
+    return shade(s, probe).rgb;
   };
   for (int k = 0; k < 3; ++k) {
     out.vertex[k] = shade_at(t.p[k], t.n[k]);
     if constexpr (Probe::on) probe.step(L::vertices, StepKind::init).idx("k", k).colour("c", out.vertex[k]).point(t.xy[k]).label("vertex").keep();
   }
   std::vector<Pixel> pixels;
-  if constexpr (Probe::on) probe.enter(fill::TriangleEdge::id, fill::TriangleEdge::listing());
-  fill::triangle_edge(fill::EdgeTriangle<Num>{t.xy, Num(1)}, pixels, probe);
-  if constexpr (Probe::on) {
-    probe.leave();
-    probe.step(L::raster, StepKind::init).idx("pixels", std::int64_t(pixels.size()));
+  {
+    const auto call = nested<fill::TriangleEdge>(probe);
+    fill::triangle_edge(fill::EdgeTriangle<Num>{t.xy, Num(1)}, pixels, probe);
   }
+  if constexpr (Probe::on) probe.step(L::raster, StepKind::init).idx("pixels", std::int64_t(pixels.size()));
   const auto& v = t.xy;
-  const Num area2 = Num((v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x));
-  auto edge = [&](const Vec2<Num>& a, const Vec2<Num>& b, const Vec2<Num>& s) { return Num((b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x)); };
+  const Num area2 = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+  auto edge = [&](const Vec2<Num>& a, const Vec2<Num>& b, const Vec2<Num>& s) { return (b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x); };
   const std::int64_t shift = [&] {
     std::int64_t lo = pixels.empty() ? 0 : pixels[0].x, hi = lo;
     for (const Pixel& p : pixels) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
@@ -87,7 +84,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
     GouraudPixel<Num> g;
     g.px = px;
     const Vec2<Num> s{Num(px.x), Num(px.y)};
-    const std::array<Num, 3> b{Num(edge(v[1], v[2], s) / area2), Num(edge(v[2], v[0], s) / area2), Num(edge(v[0], v[1], s) / area2)};
+    const std::array<Num, 3> b{edge(v[1], v[2], s) / area2, edge(v[2], v[0], s) / area2, edge(v[0], v[1], s) / area2};
     if constexpr (Probe::on) probe.step(L::pixel, StepKind::advance).idx("i", px.x).idx("j", px.y).num("b0", b[0]).num("b1", b[1]).num("b2", b[2]);
     g.gouraud = blend(b, out.vertex);
     if constexpr (Probe::on) probe.step(L::gouraud, StepKind::plot).colour("colour", g.gouraud).pixel(Pixel{px.x + shift, px.y});
@@ -101,7 +98,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> GouraudVsPhongResult<Num> g
     g.phong = shade_at(p, n);
     if constexpr (Probe::on) probe.step(L::phong, StepKind::plot).colour("colour", g.phong).pixel(Pixel{px.x + 2 * shift, px.y});
     Num d(0);
-    for (int k = 0; k < 3; ++k) d = std::max(d, num::abs(Num(g.phong[k] - g.gouraud[k])));
+    for (int k = 0; k < 3; ++k) d = std::max(d, num::abs(g.phong[k] - g.gouraud[k]));
     out.max_diff = std::max(out.max_diff, d);
     if constexpr (Probe::on) probe.step(L::diff, StepKind::decide).num("diff", d).num("max_diff", out.max_diff);
     out.pixels.push_back(g);

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <optional>
 #include <type_traits>
+#include "core/exact_sign.hpp"
 #include "core/functions.hpp"
-#include "core/interval.hpp"
 #include "core/number.hpp"
 #include "core/probe.hpp"
 #include "lighting/brdf.hpp"
@@ -20,47 +20,22 @@ namespace sw::lighting {
   X(horizon, "lit <- N.L > 0; seen <- N.E > 0          -- exact signs of the raw dot products") \
   X(below, "if not (lit and seen): term <- 0; stop    -- light or eye behind the surface")
 
-// The raw vectors as rationals (exactly) and as intervals, for exact_sign.
-namespace detail {
-inline Vec3<Rational> exact3(const Vec3<Rational>& v) { return v; }
-template <class Num> Vec3<Rational> exact3(const Vec3<Num>& v) {
-  return {num::to_rational(double(v.x)), num::to_rational(double(v.y)), num::to_rational(double(v.z))};
-}
-template <class Num> Vec3<Interval> interval3(const Vec3<Num>& v) { return {Interval(double(v.x)), Interval(double(v.y)), Interval(double(v.z))}; }
-}  // namespace detail
-
-// sign(f(vectors)) exactly, f a polynomial of the raw input: in the project's intervals first (a
-// comparison they cannot certify throws Uncertain), in rationals where they cannot decide.
-template <class F, class Num, class... More> int exact_sign(F&& f, const Vec3<Num>& a, const More&... more) {
-  auto exact = [&] { return sgn(Rational(f(detail::exact3(a), detail::exact3(more)...))); };
-  if constexpr (std::is_same_v<Num, Rational>) {
-    return exact();
-  } else {
-    try {
-      const Interval v = f(detail::interval3(a), detail::interval3(more)...);
-      return v > Interval(0) ? 1 : v < Interval(0) ? -1 : 0;
-    } catch (const Uncertain&) {
-      return exact();
-    }
-  }
-}
-
-// sign(a.b)
+// sign(a.b) of the raw vectors, exactly (num::exact_sign).
 template <class Num> int sign_dot(const Vec3<Num>& a, const Vec3<Num>& b) {
-  return exact_sign([](const auto& x, const auto& y) { return dot(x, y); }, a, b);
+  return num::exact_sign([](const auto& x, const auto& y) { return dot(x, y); }, a, b);
 }
 
 // sign(2 (N.L)(N.E) - (N.N)(L.E)): |N|^2 |L| |E| times r.e, with r the mirror of l about n.
 template <class Num> int sign_mirror(const Vec3<Num>& n, const Vec3<Num>& l, const Vec3<Num>& e) {
-  return exact_sign([](const auto& N, const auto& L, const auto& E) {
+  return num::exact_sign([](const auto& N, const auto& L, const auto& E) {
     using T = std::decay_t<decltype(N.x)>;
-    return T(T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E));
+    return T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E);
   }, n, l, e);
 }
 
 // v / |v| (v != 0; a float v whose square underflows gives Inf or NaN components: a float failure
 // the bench counts, never masked).
-template <class Num> Vec3<Num> unit(const Vec3<Num>& v) { return Num(Num(1) / num::sqrt_of(dot(v, v))) * v; }
+template <class Num> Vec3<Num> unit(const Vec3<Num>& v) { return (Num(1) / num::sqrt_of(dot(v, v))) * v; }
 
 // The frame of raw N, L, E (non-zero), with its steps on listing L (which includes
 // SW_LIGHTING_FRAME_LINES). `given`, if set, holds the decisions made beforehand on the exact input
@@ -94,7 +69,7 @@ Frame<Num> shading_frame(const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num
 // h = (l + e)/|l + e|. Defined whenever lit and seen: n.l > 0 and n.e > 0 rule out l = -e.
 template <class Num> Vec3<Num> half_vector(const Frame<Num>& f) { return unit(Vec3<Num>(f.l + f.e)); }
 // r = 2 (n.l) n - l: the mirror direction of l about n (unit when n and l are).
-template <class Num> Vec3<Num> mirror_of(const Frame<Num>& f) { return Num(Num(2) * f.nl) * f.n - f.l; }
+template <class Num> Vec3<Num> mirror_of(const Frame<Num>& f) { return Num(2) * f.nl * f.n - f.l; }
 
 // Runs a model's term on the frame: 0 below the horizon (the `below` step), else term().
 template <class L, class Num, class Probe, class Term> Num frame_term(const Frame<Num>& f, Probe& probe, Term&& term) {

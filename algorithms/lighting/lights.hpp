@@ -51,7 +51,7 @@ inline std::optional<Rational> rational_cos2(const Rational& deg) {
 // as it stands (and may decide wrongly near the boundary).
 template <class Num> bool cone_contains(const Num& ds, const Num& q, const SpotCone<Num>& c) {
   if (c.all) return true;
-  return !(ds < Num(0)) && !(Num(ds * ds) < Num(c.cos2 * q));
+  return !(ds < Num(0)) && !(ds * ds < c.cos2 * q);
 }
 // Rational: exact. A rational cos^2 is compared exactly; an irrational one is never equal to the
 // rational ds^2/q, so it is evaluated in MPFR at 300 bits and then at twice the precision until
@@ -86,7 +86,7 @@ inline bool cone_contains(const Rational& ds, const Rational& q, const SpotCone<
 
 // Attenuation 1/(k0 + k1 d + k2 d^2) at distance d (the caller passes d^2 too, exact in Rational).
 template <class Num> Num attenuation(const Light<Num>& L, const Num& d, const Num& d2) {
-  return Num(Num(1) / Num(L.k0 + L.k1 * d + L.k2 * d2));
+  return Num(1) / (L.k0 + L.k1 * d + L.k2 * d2);
 }
 
 }  // namespace sw::lighting

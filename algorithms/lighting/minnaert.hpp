@@ -20,9 +20,9 @@ struct Minnaert {
 
 // Needs lit and seen (frame_term decides).
 template <NumberType Num, StepProbe Probe> Num minnaert_term(const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
-  const Num a = num::pow(f.nl, p.minnaert_k), b = num::pow(f.ne, Num(p.minnaert_k - Num(1)));
+  const Num a = num::pow(f.nl, p.minnaert_k), b = num::pow(f.ne, p.minnaert_k - Num(1));
   if constexpr (Probe::on) probe.step(Minnaert::powers, StepKind::advance).num("a", a).num("b", b);
-  const Num d = Num(a * b);
+  const Num d = a * b;
   if constexpr (Probe::on) probe.step(Minnaert::term, StepKind::done).num("d", d);
   return d;
 }

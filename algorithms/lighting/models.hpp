@@ -15,10 +15,8 @@ namespace sw::lighting {
 template <NumberType Num, StepProbe Probe> Num diffuse_term(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   if (!(f.lit && f.seen)) return Num(0);
   if (!p.toon) return diffuse_nested(m, f, p, probe);
-  if constexpr (Probe::on) probe.enter(Toon::id, Toon::listing());
-  const Num t = toon_term(m, f, p, probe);
-  if constexpr (Probe::on) probe.leave();
-  return t;
+  const auto call = nested<Toon>(probe);
+  return toon_term(m, f, p, probe);
 }
 
 // The specular model's term on a lit and seen frame, on the model's listing (not entered).
@@ -37,10 +35,8 @@ template <NumberType Num, StepProbe Probe> Num specular_plain(SpecularModel m, c
 template <NumberType Num, StepProbe Probe> Num specular_term(SpecularModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   if (!(f.lit && f.seen) || m == SpecularModel::none) return Num(0);
   auto run = [&]<class Algo>(std::type_identity<Algo>) -> Num {
-    if constexpr (Probe::on) probe.enter(Algo::id, Algo::listing());
-    const Num s = specular_plain(m, f, p, probe);
-    if constexpr (Probe::on) probe.leave();
-    return s;
+    const auto call = nested<Algo>(probe);
+    return specular_plain(m, f, p, probe);
   };
   switch (m) {
     case SpecularModel::phong: return run(std::type_identity<Phong>{});

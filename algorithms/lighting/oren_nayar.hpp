@@ -27,14 +27,14 @@ struct OrenNayar {
 
 // Needs lit and seen (frame_term decides).
 template <NumberType Num, StepProbe Probe> Num oren_nayar_term(const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
-  const Num s2 = Num(p.sigma * p.sigma);
-  const Num A = Num(Num(1) - Num(Num(Num(1) / Num(2)) * s2 / Num(s2 + Num(Num(33) / Num(100)))));
-  const Num B = Num(Num(Num(45) / Num(100)) * s2 / Num(s2 + Num(Num(9) / Num(100))));
+  const Num s2 = p.sigma * p.sigma;
+  const Num A = Num(1) - (Num(1) / Num(2)) * s2 / (s2 + Num(33) / Num(100));
+  const Num B = (Num(45) / Num(100)) * s2 / (s2 + Num(9) / Num(100));
   if constexpr (Probe::on) probe.step(OrenNayar::coeffs, StepKind::init).num("A", A).num("B", B);
-  const Num g = Num(dot(f.l, f.e) - f.nl * f.ne);
+  const Num g = dot(f.l, f.e) - f.nl * f.ne;
   if constexpr (Probe::on) probe.step(OrenNayar::azimuth, StepKind::decide).num("g", g);
   const Num gp = g > Num(0) ? g : Num(0), big = f.nl > f.ne ? f.nl : f.ne;
-  const Num d = Num(f.nl * Num(A + Num(B * gp / big)));
+  const Num d = f.nl * (A + B * gp / big);
   if constexpr (Probe::on) probe.step(OrenNayar::term, StepKind::done).num("d", d);
   return d;
 }

@@ -85,9 +85,9 @@ struct Shade {
 template <class Num> Num max_abs(const Vec3<Num>& v) { return std::max({num::abs(v.x), num::abs(v.y), num::abs(v.z)}); }
 template <class Num> Vec3<Num> prescaled(const Vec3<Num>& v) {
   const Num m = max_abs(v);
-  return {Num(v.x / m), Num(v.y / m), Num(v.z / m)};
+  return {v.x / m, v.y / m, v.z / m};
 }
-template <class Num> Vec3<Num> times(const Vec3<Num>& a, const Vec3<Num>& b) { return {Num(a.x * b.x), Num(a.y * b.y), Num(a.z * b.z)}; }
+template <class Num> Vec3<Num> times(const Vec3<Num>& a, const Vec3<Num>& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
 // Preconditions (validated by the runtime): N != 0; E != P (local eye) or E != 0; every light's
 // colours, attenuation (k >= 0, not all 0), cone (cut-off in [0, 90] or 180, exponent >= 0) and
@@ -133,17 +133,17 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
     if constexpr (Probe::on) if (t.blocked && t.lit) probe.step(L::blocked, StepKind::miss).idx("i", std::int64_t(i));
     const Num scale = max_abs(to_light);
     const Vec3<Num> lm = prescaled(to_light);
-    const Num dm = num::sqrt_of(dot(lm, lm)), d = Num(scale * dm), d2 = Num(d * d);
-    const Vec3<Num> l = Num(Num(1) / dm) * lm;
+    const Num dm = num::sqrt_of(dot(lm, lm)), d = scale * dm, d2 = d * d;
+    const Vec3<Num> l = (Num(1) / dm) * lm;
     if constexpr (Probe::on) probe.step(L::unit, StepKind::init).num("d", d).vec("l", l);
     t.attenuation = positional ? attenuation(li, d, d2) : Num(1);
     if constexpr (Probe::on) probe.step(L::atten, StepKind::init).num("att", t.attenuation);
     t.spot = Num(1);
     if (li.type == LightType::spot && !li.cone.all) {
       const Vec3<Num> sm = prescaled(li.spot_dir);  // D/|D|_max and S/|S|_max: the same cone test, no overflow
-      const Num ds = Num(-dot(lm, sm)), q = Num(dot(lm, lm) * dot(sm, sm));
+      const Num ds = -dot(lm, sm), q = dot(lm, lm) * dot(sm, sm);
       t.inside = cone_contains(ds, q, li.cone);
-      t.spot = t.inside ? num::pow(Num(ds / num::sqrt_of(q)), li.cone.exponent) : Num(0);
+      t.spot = t.inside ? num::pow(ds / num::sqrt_of(q), li.cone.exponent) : Num(0);
       if constexpr (Probe::on)
         probe.step(L::cone, StepKind::decide).num("DS", ds).num("q", q).idx("inside", t.inside).num("spot", t.spot)
             .ray(li.where, li.spot_dir).label("S");
@@ -160,7 +160,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
       if (s.convention == Convention::gl) {
         const Vec3<Num> h = l + e;
         const Num hh = dot(h, h);
-        const Num nh = hh == Num(0) ? Num(0) : Num(dot(n, h) / num::sqrt_of(hh));
+        const Num nh = hh == Num(0) ? Num(0) : dot(n, h) / num::sqrt_of(hh);
         t.specular = num::pow(Num(0) < nh ? nh : Num(0), m.params.shininess);  // 0^0 = 1: shininess 0 is ks Is wherever lit
         if constexpr (Probe::on) probe.step(L::specular, StepKind::init).vec("h", h).num("nh", nh).num("spec", t.specular);
       } else {
@@ -168,7 +168,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
         if constexpr (Probe::on) probe.step(L::specular, StepKind::init).num("spec", t.specular);
       }
     }
-    const Num w = Num(t.attenuation * t.spot);
+    const Num w = t.attenuation * t.spot;
     t.rgb = w * (times(li.ambient, m.ka) + t.diffuse * times(li.diffuse, m.kd) + t.specular * times(li.specular, m.ks));
     out.rgb = out.rgb + t.rgb;
     if constexpr (Probe::on) probe.step(L::add, StepKind::advance).colour("light", t.rgb).colour("c", out.rgb);

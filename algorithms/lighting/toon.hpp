@@ -24,10 +24,8 @@ struct Toon {
 // The diffuse model's term inside its own nested listing (needs lit and seen).
 template <NumberType Num, StepProbe Probe> Num diffuse_nested(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   auto run = [&]<class Algo>(std::type_identity<Algo>, auto term) -> Num {
-    if constexpr (Probe::on) probe.enter(Algo::id, Algo::listing());
-    const Num d = term();
-    if constexpr (Probe::on) probe.leave();
-    return d;
+    const auto call = nested<Algo>(probe);
+    return term();
   };
   switch (m) {
     case DiffuseModel::minnaert: return run(std::type_identity<Minnaert>{}, [&]() -> Num { return minnaert_term(f, p, probe); });

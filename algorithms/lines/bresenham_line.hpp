@@ -40,7 +40,7 @@ bool bresenham_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& 
   const int sa = num::sign(d[a]), sb = num::sign(d[b]);
   const Num A = num::abs(d[a]), B = num::abs(d[b]);
   if constexpr (Probe::on) probe.step(L::signs, StepKind::init).idx("s_a", sa).idx("s_b", sb).num("A", A).num("B", B);
-  Num e = Num(Num(2) * B - A);
+  Num e = Num(2) * B - A;
   if constexpr (Probe::on) probe.step(L::decision, StepKind::init).num("e", e);
   // The walk keeps p's major and minor coordinates apart (pa, pb); p is (pa, pb) or (pb, pa).
   Num pa = p0[a], pb = p0[b];
@@ -55,12 +55,12 @@ bool bresenham_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& 
     const bool up = e > Num(0) || (e == Num(0) && sb > 0);
     if constexpr (Probe::on) probe.step(L::test, StepKind::decide).num("e", e).idx("minor_step", up);
     if (up) {
-      pb = Num(pb + Num(sb));
-      e = Num(e - Num(2) * A);
+      pb = pb + Num(sb);
+      e = e - Num(2) * A;
       if constexpr (Probe::on) probe.step(L::minor_step, StepKind::advance).num("e", e).point(point());
     }
-    pa = Num(pa + Num(sa));
-    e = Num(e + Num(2) * B);
+    pa = pa + Num(sa);
+    e = e + Num(2) * B;
     if constexpr (Probe::on) probe.step(L::major_step, StepKind::advance).num("e", e).point(point());
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done);

@@ -40,11 +40,11 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
     if constexpr (Probe::on) probe.step(L::done, StepKind::done);
     return true;
   }
-  Pixel cell{num::floor_int(Num(p0.x + Num(0.5))), num::floor_int(Num(p0.y + Num(0.5)))};
+  Pixel cell{num::floor_int(p0.x + Num(0.5)), num::floor_int(p0.y + Num(0.5))};
   // Every point p0 + t d with t < 1 lies in a cell between p0's and p1's along each axis, so no
   // walk steps past p1's cell. Exact arithmetic stops on t >= 1 first; a number type whose tMax
   // stalls (float, |d| beyond 2^24) stops here instead of running on past p1.
-  const Pixel last{num::floor_int(Num(p1.x + Num(0.5))), num::floor_int(Num(p1.y + Num(0.5)))};
+  const Pixel last{num::floor_int(p1.x + Num(0.5)), num::floor_int(p1.y + Num(0.5))};
   out.push_back(cell);
   if constexpr (Probe::on) probe.step(L::start, StepKind::visit).idx("i", cell.x).idx("j", cell.y).pixel(cell).point(p0);
   std::array<int, 2> step{num::sign(d.x), num::sign(d.y)};
@@ -52,9 +52,9 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
   std::int64_t bound = 4;  // crossings of each axis, plus slack to detect a stall
   for (int a = 0; a < 2; ++a) {
     if (step[a] == 0) continue;
-    t_delta[a] = Num(Num(step[a]) / d[a]);
+    t_delta[a] = Num(step[a]) / d[a];
     const std::int64_t c = a == 0 ? cell.x : cell.y;
-    t_max[a] = Num((Num(c) + Num(step[a] * 0.5) - p0[a]) / d[a]);
+    t_max[a] = (Num(c) + Num(step[a] * 0.5) - p0[a]) / d[a];
     bound += num::floor_int(num::abs(d[a])) + 2;
   }
   if constexpr (Probe::on) probe.step(L::setup, StepKind::init).idx("step_x", step[0]).idx("step_y", step[1]).num("tDelta_x", t_delta[0]).num("tDelta_y", t_delta[1]);
@@ -79,7 +79,7 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
       for (int a = 0; a < 2; ++a) {
         if (!hit[a] || step[a] != dir) continue;
         (a == 0 ? cell.x : cell.y) += dir;
-        t_max[a] = Num(t_max[a] + t_delta[a]);
+        t_max[a] = t_max[a] + t_delta[a];
         moved = true;
       }
       if (!moved) continue;

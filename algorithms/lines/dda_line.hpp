@@ -40,7 +40,7 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
   const bool swapped = d[a] < Num(0);
   if (swapped) {
     std::swap(p0, p1);
-    d = Vec2<Num>{Num(-d.x), Num(-d.y)};
+    d = Vec2<Num>{-d.x, -d.y};
   }
   if constexpr (Probe::on) probe.step(L::swap, StepKind::decide).idx("swapped", swapped).num("dx", d.x).num("dy", d.y);
   if (d[a] == Num(0)) {
@@ -49,12 +49,12 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
   }
   Vec2<Num> dp;
   dp[a] = Num(1);
-  dp[1 - a] = Num(d[1 - a] / d[a]);
+  dp[1 - a] = d[1 - a] / d[a];
   if constexpr (Probe::on) probe.step(L::slope, StepKind::init).num("dpx", dp.x).num("dpy", dp.y);
   const Num first = Num(num::ceil_int(p0[a]));
-  const Num offset = Num(first - p0[a]);
+  const Num offset = first - p0[a];
   Vec2<Num> q = p0 + offset * dp;
-  if constexpr (Probe::on) probe.step(L::offset, StepKind::init).num("dp0x", Num(offset * dp.x)).num("dp0y", Num(offset * dp.y)).num("qx", q.x).num("qy", q.y).point(q).label("q");
+  if constexpr (Probe::on) probe.step(L::offset, StepKind::init).num("dp0x", offset * dp.x).num("dp0y", offset * dp.y).num("qx", q.x).num("qy", q.y).point(q).label("q");
   // Columns in [p0_a, p1_a): ceil(p1_a) - ceil(p0_a) of them; one more pass detects a stall.
   const std::int64_t bound = num::ceil_int(p1[a]) - num::ceil_int(p0[a]) + 1;
   for (std::int64_t n = 0; n < bound; ++n) {
@@ -62,7 +62,7 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
       if constexpr (Probe::on) probe.step(L::done, StepKind::done).num("qx", q.x).num("qy", q.y).point(q).label("q");
       return true;
     }
-    const Pixel px{num::floor_int(Num(q.x + Num(0.5))), num::floor_int(Num(q.y + Num(0.5)))};
+    const Pixel px{num::floor_int(q.x + Num(0.5)), num::floor_int(q.y + Num(0.5))};
     out.push_back(px);
     if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).num("qx", q.x).num("qy", q.y).idx("i", px.x).idx("j", px.y).pixel(px).point(q).label("q");
     q = q + dp;

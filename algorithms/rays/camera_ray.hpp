@@ -54,7 +54,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 CameraRay<Num> camera_ray_at(const Camera<Num>& c, std::int64_t i, std::int64_t j, const Num& di, const Num& dj, Probe& probe) {
   using L = CameraRayAlgo;
   CameraRay<Num> out;
-  auto unit = [](const Vec3<Num>& a) { return Num(Num(1) / num::sqrt_of(dot(a, a))) * a; };
+  auto unit = [](const Vec3<Num>& a) { return (Num(1) / num::sqrt_of(dot(a, a))) * a; };
   const Vec3<Num> n = unit(c.vpn), u = unit(cross(c.vup, n)), v = cross(n, u);
   if constexpr (Probe::on)
     probe.step(L::frame, StepKind::init).num("ux", u.x).num("uy", u.y).num("uz", u.z).num("vx", v.x).num("vy", v.y).num("vz", v.z)
@@ -63,38 +63,38 @@ CameraRay<Num> camera_ray_at(const Camera<Num>& c, std::int64_t i, std::int64_t 
         .segment(c.eye, Vec3<Num>(c.eye + n)).label("n").keep();
   const Num w = Num(double(c.width)), h = Num(double(c.height)), half(0.5);
   // Adding an offset of 0 is exact: the centre's sx, sy are those of the formula without it.
-  const Num sx = Num(Num(2) * Num(Num(Num(double(i)) + half) + di) / w - Num(1)), sy = Num(Num(1) - Num(2) * Num(Num(Num(double(j)) + half) + dj) / h);
+  const Num sx = Num(2) * (Num(double(i)) + half + di) / w - Num(1), sy = Num(1) - Num(2) * (Num(double(j)) + half + dj) / h;
   if constexpr (Probe::on) {
     auto& st = probe.step(L::screen, StepKind::init).idx("i", i).idx("j", j).num("sx", sx).num("sy", sy);
     if (!(di == Num(0) && dj == Num(0))) st.num("di", di).num("dj", dj);
   }
   Vec3<Num> dir;
   if (c.projection == Projection::perspective && c.has_window) {
-    const Num wu = Num(c.window[0] + Num(Num(sx + Num(1)) * half) * Num(c.window[1] - c.window[0]));
-    const Num wv = Num(c.window[2] + Num(Num(sy + Num(1)) * half) * Num(c.window[3] - c.window[2]));
+    const Num wu = c.window[0] + (sx + Num(1)) * half * (c.window[1] - c.window[0]);
+    const Num wv = c.window[2] + (sy + Num(1)) * half * (c.window[3] - c.window[2]);
     const Vec3<Num> p1 = c.eye - c.dist * n + wu * u + wv * v;
     dir = p1 - c.eye;
     if constexpr (Probe::on) probe.step(L::given, StepKind::advance).num("wu", wu).num("wv", wv).point(p1).label("P1").keep();
   } else if (c.projection == Projection::perspective) {
-    const Num hh = Num(c.dist * num::tan(Num(c.fov * half))), hw = Num(hh * w / h);
+    const Num hh = c.dist * num::tan(c.fov * half), hw = hh * w / h;
     if constexpr (Probe::on) probe.step(L::window, StepKind::init).num("hh", hh).num("hw", hw);
-    const Vec3<Num> p1 = c.eye - c.dist * n + Num(sx * hw) * u + Num(sy * hh) * v;
+    const Vec3<Num> p1 = c.eye - c.dist * n + sx * hw * u + sy * hh * v;
     dir = p1 - c.eye;
     if constexpr (Probe::on) probe.step(L::point, StepKind::advance).point(p1).label("P1").keep();
   } else if (c.projection == Projection::fisheye) {
-    const Num x = Num(sx * w / h), rho = num::sqrt_of(Num(x * x + sy * sy));
-    const Num theta = Num(rho * c.fov * half), phi = num::atan2(sy, x);
+    const Num x = sx * w / h, rho = num::sqrt_of(x * x + sy * sy);
+    const Num theta = rho * c.fov * half, phi = num::atan2(sy, x);
     if constexpr (Probe::on) probe.step(L::fisheye, StepKind::decide).num("rho", rho).num("theta", theta).num("phi", phi);
     if (rho > Num(1)) {
       if constexpr (Probe::on) probe.step(L::circle, StepKind::miss);
       return out;
     }
     const Num st = num::sin(theta);
-    dir = Num(st * num::cos(phi)) * u + Num(st * num::sin(phi)) * v - num::cos(theta) * n;
+    dir = st * num::cos(phi) * u + st * num::sin(phi) * v - num::cos(theta) * n;
   } else {
-    const Num phi = Num(sx * c.fov * half * w / h);
+    const Num phi = sx * c.fov * half * w / h;
     if constexpr (Probe::on) probe.step(L::cyl, StepKind::decide).num("phi", phi);
-    dir = c.dist * (num::sin(phi) * u - num::cos(phi) * n) + Num(sy * c.dist * num::tan(Num(c.fov * half))) * v;
+    dir = c.dist * (num::sin(phi) * u - num::cos(phi) * n) + sy * c.dist * num::tan(c.fov * half) * v;
   }
   out.valid = true;
   out.ray = {c.eye, dir};

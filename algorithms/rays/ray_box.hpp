@@ -58,7 +58,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
       continue;
     }
     // The selections are branch-free (num::select): which way they go depends on the data.
-    const Num ta = Num(Num(lo[k] - r.o[k]) / r.d[k]), tb = Num(Num(hi[k] - r.o[k]) / r.d[k]);
+    const Num ta = (lo[k] - r.o[k]) / r.d[k], tb = (hi[k] - r.o[k]) / r.d[k];
     const bool flip = d_sign < 0;
     const Num t1 = num::select(flip, tb, ta), t2 = num::select(flip, ta, tb);
     if (!bounded) {
@@ -71,7 +71,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
       static constexpr const char* slab[3] = {"x slab", "y slab", "z slab"};
       probe.step(L::clip, StepKind::advance).idx("k", k).num("t1", t1).num("t2", t2).num("t_near", tn).num("t_far", tf)
           .segment(Vec3<Num>(r.o + t1 * r.d), Vec3<Num>(r.o + t2 * r.d)).label(slab[k]).keep()
-          .segment(Vec3<Num>(r.o + tn * r.d), Vec3<Num>(r.o + tf * r.d)).label("[t_near, t_far]").value(Num(tf - tn)).replace();
+          .segment(Vec3<Num>(r.o + tn * r.d), Vec3<Num>(r.o + tf * r.d)).label("[t_near, t_far]").value(tf - tn).replace();
     }
   }
   // d != 0, so some axis bounded the interval.

@@ -23,10 +23,10 @@ template <class Num> struct Ray3 {
 template <class Num> num::Rooted<Num> add_root(const Num& p, int s, const Num& q) {
   const num::Rooted<Num> r = num::root(q);
   if constexpr (std::is_same_v<Num, Rational>) {
-    if (r.exact || sgn(p) * s >= 0) return {Num(p + s * r.value), r.exact};
-    return {Num(Num(p * p - q) / Num(p - s * r.value)), false};
+    if (r.exact || sgn(p) * s >= 0) return {p + s * r.value, r.exact};
+    return {(p * p - q) / (p - s * r.value), false};
   } else {
-    return {num::select(s > 0, Num(p + r.value), Num(p - r.value)), false};
+    return {num::select(s > 0, p + r.value, p - r.value), false};
   }
 }
 

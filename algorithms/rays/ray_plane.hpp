@@ -47,7 +47,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
     return out;
   }
-  out.hit = true, out.t = Num(num / den);
+  out.hit = true, out.t = num / den;
   if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
   return out;
 }

@@ -7,14 +7,9 @@
 #include <string_view>
 #include "core/probe.hpp"
 #include "rays/ray_common.hpp"
+#include "rays/sphere_hit.hpp"
 
 namespace sw::ray {
-
-template <class Num> struct SphereHit {
-  bool hit = false;
-  Num t{};
-  bool t_exact = true;  // false when t went through a rounded square root
-};
 
 struct RaySphereGeometric {
   static constexpr std::string_view id = "ray-sphere-geometric";
@@ -40,31 +35,29 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   using L = RaySphereGeometric;
   SphereHit<Num> out;
   const Vec3<Num> l = c - r.o;
-  const Num l2 = dot(l, l), a = dot(r.d, r.d), r2 = Num(radius * radius);
-  if constexpr (Probe::on)
-    probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2)
-        .ray(r.o, r.d).keep().sphere(c, radius).keep();
+  const Num l2 = dot(l, l), a = dot(r.d, r.d), r2 = radius * radius;
+  if constexpr (Probe::on) record_sphere_scene(probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2), r, c, radius);
   const bool inside = l2 < r2, outside = l2 > r2;
   if constexpr (Probe::on) probe.step(L::inside, StepKind::decide).idx("inside", inside).idx("on", !inside && !outside);
   const Num tca = dot(l, r.d);
-  if constexpr (Probe::on) probe.step(L::tca, StepKind::decide).num("tca", tca).point(Vec3<Num>(r.o + Num(tca / a) * r.d)).label("closest").keep();
+  if constexpr (Probe::on) probe.step(L::tca, StepKind::decide).num("tca", tca).point(Vec3<Num>(r.o + (tca / a) * r.d)).label("closest").keep();
   if (!inside && !(tca > Num(0))) {
     if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
     return out;
   }
-  const Num m2 = Num(l2 - Num(tca * tca) / a);
+  const Num m2 = l2 - tca * tca / a;
   if constexpr (Probe::on)  // the line's closest approach to c, coloured by whether it is within r
-    probe.step(L::dist, StepKind::decide).num("m2", m2).segment(c, Vec3<Num>(r.o + Num(tca / a) * r.d)).label("r^2 - m2").value(Num(r2 - m2)).keep();
+    probe.step(L::dist, StepKind::decide).num("m2", m2).segment(c, Vec3<Num>(r.o + (tca / a) * r.d)).label("r^2 - m2").value(r2 - m2).keep();
   if (m2 > r2) {
     if constexpr (Probe::on) probe.step(L::reject, StepKind::miss);
     return out;
   }
-  const Num h2 = Num(a * Num(r2 - m2));
+  const Num h2 = a * (r2 - m2);
   if constexpr (Probe::on) probe.step(L::chord, StepKind::decide).num("h2", h2);
   // Near root when the origin is outside; the far root when inside or on the sphere (there the
   // near root is <= 0).
   const num::Rooted<Num> n = add_root(tca, outside ? -1 : 1, h2);
-  out.t = Num(n.value / a);
+  out.t = n.value / a;
   out.t_exact = n.exact;
   out.hit = true;
   if constexpr (Probe::on) probe.step(L::root, StepKind::hit).num("t", out.t).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");

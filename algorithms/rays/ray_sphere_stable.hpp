@@ -4,7 +4,11 @@
 // q = -(b' + sign(b') sqrt(D)), t = c/q and q/a, which never subtracts nearly equal numbers.
 // Which of the two is nearer follows from the sign of b' alone.
 #pragma once
-#include "rays/ray_sphere_geometric.hpp"
+#include <array>
+#include <string_view>
+#include "core/probe.hpp"
+#include "rays/ray_common.hpp"
+#include "rays/sphere_hit.hpp"
 
 namespace sw::ray {
 
@@ -33,15 +37,13 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   using L = RaySphereStable;
   SphereHit<Num> out;
   const Vec3<Num> f = r.o - c;
-  const Num a = dot(r.d, r.d), bh = dot(f, r.d), r2 = Num(radius * radius), cc = Num(dot(f, f) - r2);
-  if constexpr (Probe::on)
-    probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc)
-        .ray(r.o, r.d).keep().sphere(c, radius).keep();
-  const Vec3<Num> l = f - Num(bh / a) * r.d;
+  const Num a = dot(r.d, r.d), bh = dot(f, r.d), r2 = radius * radius, cc = dot(f, f) - r2;
+  if constexpr (Probe::on) record_sphere_scene(probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc), r, c, radius);
+  const Vec3<Num> l = f - (bh / a) * r.d;
   if constexpr (Probe::on)  // the foot of the perpendicular from c, and whether the line is within r of c
     probe.step(L::foot, StepKind::advance).num("lx", l.x).num("ly", l.y).num("lz", l.z).point(Vec3<Num>(c + l)).label("foot").keep()
-        .segment(c, Vec3<Num>(c + l)).label("r^2 - |l|^2").value(Num(r2 - dot(l, l))).keep();
-  const Num disc = Num(a * Num(r2 - dot(l, l)));
+        .segment(c, Vec3<Num>(c + l)).label("r^2 - |l|^2").value(r2 - dot(l, l)).keep();
+  const Num disc = a * (r2 - dot(l, l));
   if constexpr (Probe::on) probe.step(L::disc, StepKind::decide).num("D", disc);
   if (disc < Num(0)) {
     if constexpr (Probe::on) probe.step(L::miss, StepKind::miss);
@@ -51,7 +53,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const num::Rooted<Num> root = num::root(disc);
   const Num s = root.value;
   out.t_exact = root.exact;
-  const Num q = num::select(b_neg, Num(s - bh), Num(Num(-bh) - s));
+  const Num q = num::select(b_neg, s - bh, -bh - s);
   if constexpr (Probe::on) probe.step(L::q, StepKind::decide).num("q", q);
   if (q == Num(0)) {
     if constexpr (Probe::on) probe.step(L::degenerate, StepKind::miss);
@@ -62,18 +64,14 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const int cc_sign = num::sign(cc);
   const bool near_hit = b_neg & (cc_sign > 0), far_hit = b_neg | (cc_sign < 0), far_is_qa = b_neg & !near_hit;
   if constexpr (Probe::on) {
-    const Num t_qa = Num(q / a), t_cq = Num(cc / q);
+    const Num t_qa = q / a, t_cq = cc / q;
     const Num near = num::select(b_neg, t_cq, t_qa), far = num::select(b_neg, t_qa, t_cq);
     probe.step(L::order, StepKind::decide).num("near", near).num("far", far).point(Vec3<Num>(r.o + near * r.d)).label("near").keep()
         .point(Vec3<Num>(r.o + far * r.d)).label("far").keep();
   }
   out.hit = far_hit;  // near_hit implies far_hit
-  out.t = Num(num::select(far_is_qa, q, cc) / num::select(far_is_qa, a, q));
-  if constexpr (Probe::on) {
-    if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
-    else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + out.t * r.d)).label("hit");
-    else probe.step(L::none, StepKind::miss);
-  }
+  out.t = num::select(far_is_qa, q, cc) / num::select(far_is_qa, a, q);
+  if constexpr (Probe::on) record_sphere_end<L>(probe, r, out.t, near_hit, far_hit);
   return out;
 }
 

@@ -38,7 +38,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     if constexpr (Probe::on) probe.step(L::denom, StepKind::miss);
     return out;
   }
-  const Num t = Num(dot(n, Vec3<Num>(vtx[0] - r.o)) / den);
+  const Num t = dot(n, Vec3<Num>(vtx[0] - r.o)) / den;
   if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
   if (!(t > Num(0))) {
     if constexpr (Probe::on) probe.step(L::t, StepKind::miss);
@@ -49,20 +49,20 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const int k = num::max_axis(n), i = (k + 1) % 3, j = (k + 2) % 3;
   if constexpr (Probe::on) probe.step(L::drop, StepKind::decide).idx("k", k);
   const Vec3<Num> w = p - vtx[0];
-  const Num nk = Num(e1[i] * e2[j] - e1[j] * e2[i]);  // = n_k, nonzero as |n_k| is max and n != 0
-  const Num beta = Num(Num(w[i] * e2[j] - w[j] * e2[i]) / nk);
-  const Num gamma = Num(Num(e1[i] * w[j] - e1[j] * w[i]) / nk);
+  const Num nk = e1[i] * e2[j] - e1[j] * e2[i];  // = n_k, nonzero as |n_k| is max and n != 0
+  const Num beta = (w[i] * e2[j] - w[j] * e2[i]) / nk;
+  const Num gamma = (e1[i] * w[j] - e1[j] * w[i]) / nk;
   // Each weight is an edge test: b_i = 0 on the edge opposite v_i, so its sign colours that edge.
   if constexpr (Probe::on)
     probe.step(L::solve, StepKind::decide).num("beta", beta).num("gamma", gamma).segment(vtx[2], vtx[0]).label("beta").value(beta)
-        .segment(vtx[0], vtx[1]).label("gamma").value(gamma).segment(vtx[1], vtx[2]).label("1 - beta - gamma").value(Num(Num(1) - Num(beta + gamma)));
-  if (beta < Num(0) || gamma < Num(0) || Num(beta + gamma) > Num(1)) {
+        .segment(vtx[0], vtx[1]).label("gamma").value(gamma).segment(vtx[1], vtx[2]).label("1 - beta - gamma").value(Num(1) - (beta + gamma));
+  if (beta < Num(0) || gamma < Num(0) || beta + gamma > Num(1)) {
     if constexpr (Probe::on) probe.step(L::inside, StepKind::miss);
     return out;
   }
   out.hit = true;
   out.t = t;
-  out.b = {Num(Num(1) - beta - gamma), beta, gamma};
+  out.b = {Num(1) - beta - gamma, beta, gamma};
   if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(p).label("hit");
   return out;
 }

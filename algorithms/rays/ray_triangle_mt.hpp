@@ -39,23 +39,23 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
     return out;
   }
-  const Num inv = Num(Num(1) / det);
+  const Num inv = Num(1) / det;
   const Vec3<Num> s = r.o - vtx[0];
-  const Num u = Num(dot(s, p) * inv);
+  const Num u = dot(s, p) * inv;
   if constexpr (Probe::on) probe.step(L::u, StepKind::decide).num("u", u).segment(vtx[2], vtx[0]).label("u").value(u);  // u = 0 on the edge opposite v1
   if (u < Num(0) || u > Num(1)) {
     if constexpr (Probe::on) probe.step(L::u, StepKind::miss);
     return out;
   }
   const Vec3<Num> q = cross(s, e1);
-  const Num v = Num(dot(r.d, q) * inv);
+  const Num v = dot(r.d, q) * inv;
   if constexpr (Probe::on)
-    probe.step(L::v, StepKind::decide).num("v", v).segment(vtx[0], vtx[1]).label("v").value(v).segment(vtx[1], vtx[2]).label("1 - u - v").value(Num(Num(1) - Num(u + v)));
-  if (v < Num(0) || Num(u + v) > Num(1)) {
+    probe.step(L::v, StepKind::decide).num("v", v).segment(vtx[0], vtx[1]).label("v").value(v).segment(vtx[1], vtx[2]).label("1 - u - v").value(Num(1) - (u + v));
+  if (v < Num(0) || u + v > Num(1)) {
     if constexpr (Probe::on) probe.step(L::v, StepKind::miss);
     return out;
   }
-  const Num t = Num(dot(e2, q) * inv);
+  const Num t = dot(e2, q) * inv;
   if constexpr (Probe::on) probe.step(L::t, StepKind::decide).num("t", t);
   if (!(t > Num(0))) {
     if constexpr (Probe::on) probe.step(L::t, StepKind::miss);
@@ -63,7 +63,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   }
   out.hit = true;
   out.t = t;
-  out.b = {Num(Num(1) - u - v), u, v};
+  out.b = {Num(1) - u - v, u, v};
   if constexpr (Probe::on) probe.step(L::hit, StepKind::hit).num("b0", out.b[0]).point(Vec3<Num>(r.o + t * r.d)).label("hit");
   return out;
 }

@@ -47,16 +47,16 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   if (r.d[kz] < Num(0)) std::swap(kx, ky);
   if constexpr (Probe::on)
     record_triangle_scene(probe.step(L::axes, StepKind::init).idx("kx", kx).idx("ky", ky).idx("kz", kz), r, v);
-  const Num sx = Num(r.d[kx] / r.d[kz]), sy = Num(r.d[ky] / r.d[kz]), sz = Num(Num(1) / r.d[kz]);
+  const Num sx = r.d[kx] / r.d[kz], sy = r.d[ky] / r.d[kz], sz = Num(1) / r.d[kz];
   if constexpr (Probe::on) probe.step(L::shear, StepKind::init).num("Sx", sx).num("Sy", sy).num("Sz", sz);
   const Vec3<Num> a = v[0] - r.o, b = v[1] - r.o, c = v[2] - r.o;
   if constexpr (Probe::on) probe.step(L::translate, StepKind::init).segment(r.o, v[0]).label("A").segment(r.o, v[1]).label("B").segment(r.o, v[2]).label("C");
-  const Num ax = Num(a[kx] - sx * a[kz]), ay = Num(a[ky] - sy * a[kz]);
-  const Num bx = Num(b[kx] - sx * b[kz]), by = Num(b[ky] - sy * b[kz]);
-  const Num cx = Num(c[kx] - sx * c[kz]), cy = Num(c[ky] - sy * c[kz]);
+  const Num ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
+  const Num bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
+  const Num cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
   if constexpr (Probe::on)
     probe.step(L::project, StepKind::init).num("Ax", ax).num("Ay", ay).num("Bx", bx).num("By", by).num("Cx", cx).num("Cy", cy);
-  Num u = Num(cx * by - cy * bx), w_v = Num(ax * cy - ay * cx), w = Num(bx * ay - by * ax);
+  Num u = cx * by - cy * bx, w_v = ax * cy - ay * cx, w = bx * ay - by * ax;
   // U, V, W are the edge functions of the edges opposite v0, v1, v2: their signs colour those edges.
   if constexpr (Probe::on)
     probe.step(L::edges, StepKind::decide).num("U", u).num("V", w_v).num("W", w).segment(v[1], v[2]).label("U").value(u)
@@ -79,24 +79,24 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     if constexpr (Probe::on) probe.step(L::sides, StepKind::miss);
     return out;
   }
-  const Num det = Num(u + w_v + w);
+  const Num det = u + w_v + w;
   if constexpr (Probe::on) probe.step(L::det, StepKind::decide).num("det", det);
   const int det_sign = num::sign(det);
   if (det_sign == 0) {
     if constexpr (Probe::on) probe.step(L::det, StepKind::miss);
     return out;
   }
-  const Num t_num = Num(u * Num(sz * a[kz]) + w_v * Num(sz * b[kz]) + w * Num(sz * c[kz]));
+  const Num t_num = u * (sz * a[kz]) + w_v * (sz * b[kz]) + w * (sz * c[kz]);
   if constexpr (Probe::on) probe.step(L::depth, StepKind::decide).num("T", t_num);
   if (num::sign(t_num) != det_sign) {  // T = 0 included: det != 0 here
     if constexpr (Probe::on) probe.step(L::sign, StepKind::miss);
     return out;
   }
   // One division, as in the paper: the reciprocal scales t and the three weights.
-  const Num inv_det = Num(Num(1) / det);
+  const Num inv_det = Num(1) / det;
   out.hit = true;
-  out.t = Num(t_num * inv_det);
-  out.b = {Num(u * inv_det), Num(w_v * inv_det), Num(w * inv_det)};
+  out.t = t_num * inv_det;
+  out.b = {u * inv_det, w_v * inv_det, w * inv_det};
   if constexpr (Probe::on) {
     const Vec3<Num> p = r.o + out.t * r.d;
     probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p).label("hit");

@@ -33,18 +33,18 @@ template <NumberType Num, StepProbe Probe = NoProbe> SphereUV<Num> sphere_uv(con
   using L = SphereUVAlgo;
   SphereUV<Num> out;
   const Vec3<Num> q = p - c;
-  out.normal = Num(Num(1) / num::sqrt_of(dot(q, q))) * q;
+  out.normal = (Num(1) / num::sqrt_of(dot(q, q))) * q;
   const Vec3<Num>& n = out.normal;
   if constexpr (Probe::on)
     probe.step(L::normal, StepKind::init).num("Nx", n.x).num("Ny", n.y).num("Nz", n.z).sphere(c, num::sqrt_of(dot(q, q))).keep()
         .point(p).label("P").keep().segment(p, Vec3<Num>(p + n)).label("N").keep();
   out.lon = num::atan2(n.y, n.x);
   if constexpr (Probe::on) probe.step(L::lon, StepKind::advance).num("lon", out.lon);
-  out.lat = num::atan2(n.z, num::sqrt_of(Num(n.x * n.x + n.y * n.y)));
+  out.lat = num::atan2(n.z, num::sqrt_of(n.x * n.x + n.y * n.y));
   if constexpr (Probe::on) probe.step(L::lat, StepKind::advance).num("lat", out.lat);
   const Num pi = num::pi<Num>();
-  out.u = Num(Num(out.lon + pi) / Num(Num(2) * pi));
-  out.v = Num(Num(out.lat + Num(pi * Num(0.5))) / pi);
+  out.u = (out.lon + pi) / (Num(2) * pi);
+  out.v = (out.lat + pi * Num(0.5)) / pi;
   if constexpr (Probe::on) probe.step(L::uv, StepKind::done).num("u", out.u).num("v", out.v);
   return out;
 }

@@ -33,12 +33,12 @@ template <class Num, int D> struct Box {
       if (p[k] < lo[k] || hi[k] < p[k]) return false;
     return true;
   }
-  Num extent(int k) const { return Num(hi[k] - lo[k]); }
+  Num extent(int k) const { return hi[k] - lo[k]; }
   // The measure the SAH weighs a child by: half the surface area in 3D, half the perimeter in 2D.
   // (Halving changes no ratio of two measures, which is all the heuristic uses.)
   Num half_area() const {
-    if constexpr (D == 2) return Num(extent(0) + extent(1));
-    else return Num(extent(0) * extent(1) + extent(1) * extent(2) + extent(2) * extent(0));
+    if constexpr (D == 2) return extent(0) + extent(1);
+    else return extent(0) * extent(1) + extent(1) * extent(2) + extent(2) * extent(0);
   }
   int longest_axis() const {
     int a = 0;

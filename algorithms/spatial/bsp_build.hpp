@@ -48,7 +48,7 @@ inline constexpr std::size_t kBspCandidates = 8;
 
 // Twice the signed area of p, q, r: > 0 when r is left of p -> q (in front), < 0 right (behind).
 template <class Num> Num orient2(const Vec2<Num>& p, const Vec2<Num>& q, const Vec2<Num>& r) {
-  return Num(Num(Num(q.x - p.x) * Num(r.y - p.y)) - Num(Num(q.y - p.y) * Num(r.x - p.x)));
+  return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
 }
 
 enum class BspSide : std::int8_t { back = -1, on = 0, front = 1, split = 2 };
@@ -103,7 +103,7 @@ template <class Num> std::array<Vec2<Num>, 2> bsp_line_across(const Segment2<Num
   const double dx = num::to_double(d.x), dy = num::to_double(d.y);
   const int k = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy) ? 0 : 1;
   if (dx == 0 && dy == 0) return {s.a, s.b};  // a float-rounded zero-length segment
-  const Num t0 = Num(Num(box.lo[k] - s.a[k]) / d[k]), t1 = Num(Num(box.hi[k] - s.a[k]) / d[k]);
+  const Num t0 = (box.lo[k] - s.a[k]) / d[k], t1 = (box.hi[k] - s.a[k]) / d[k];
   return {s.a + t0 * d, s.a + t1 * d};
 }
 
@@ -189,7 +189,7 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
         if constexpr (Probe::on) {
           const L::Line at = side == BspSide::on ? L::on_line : side == BspSide::front ? L::front : L::back;
           probe.step(at, StepKind::decide).idx("frag", f).idx("seg", ab.seg).num("s_a", sa).num("s_b", sb)
-              .point(ab.a).value(sa).point(ab.b).value(sb).segment(ab.a, ab.b).value(Num(sa + sb));
+              .point(ab.a).value(sa).point(ab.b).value(sb).segment(ab.a, ab.b).value(sa + sb);
         }
         continue;
       }
@@ -197,7 +197,7 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
         t.exhausted = true;
         return t;
       }
-      const Vec2<Num> x = ab.a + Num(sa / Num(sa - sb)) * (ab.b - ab.a);
+      const Vec2<Num> x = ab.a + (sa / (sa - sb)) * (ab.b - ab.a);
       const auto g = static_cast<std::int32_t>(t.frags.size());
       t.frags.push_back({ab.seg, s, ab.cut_b, x, ab.b});
       t.frags[f].b = x, t.frags[f].cut_b = s;

@@ -37,10 +37,11 @@ BspPaint<Num> bsp_painter(const std::vector<Segment2<Num>>& segs, const Vec2<Num
     auto& s = probe.step(L::build, StepKind::init).idx("n", static_cast<std::int64_t>(segs.size()));
     s.point(eye).label("eye").keep();
     for (std::size_t i = 0; i < segs.size(); ++i) s.segment(segs[i].a, segs[i].b).label("seg").value(Num(static_cast<std::int64_t>(i))).keep();
-    probe.enter(BspBuild::id, BspBuild::listing());
   }
-  out.tree = bsp_build<Num>(segs, max_fragments, probe);
-  if constexpr (Probe::on) probe.leave();
+  {
+    const auto call = nested<BspBuild>(probe);
+    out.tree = bsp_build<Num>(segs, max_fragments, probe);
+  }
   if (out.tree.exhausted) return out;
   const BspTree<Num>& t = out.tree;
   // Tasks: v >= 0 visits node v; v < 0 draws node -v - 1's fragments.

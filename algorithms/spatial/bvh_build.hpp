@@ -67,7 +67,7 @@ template <class Num> Box<Num, 3> union_of(const std::vector<Box<Num, 3>>& boxes,
 // The bin of centroid coordinate c >= lo, given scale = 16 / (hi - lo), clamped to the last bin.
 // The test also catches a rounded scale that overflowed (inf, and 0 * inf = NaN) for tiny hi - lo.
 template <class Num> int bin_of(const Num& c, const Num& lo, const Num& scale) {
-  const Num x = Num(Num(c - lo) * scale);
+  const Num x = (c - lo) * scale;
   if (!(x < Num(kBvhBins))) return kBvhBins - 1;
   return static_cast<int>(num::floor_int(x));
 }
@@ -128,7 +128,7 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
         if (!(c.lo[k] < c.hi[k])) continue;
         std::array<std::int32_t, kBvhBins> count{};
         std::array<B3, kBvhBins> bin{};
-        const Num scale = Num(Num(kBvhBins) / Num(c.hi[k] - c.lo[k]));
+        const Num scale = Num(kBvhBins) / (c.hi[k] - c.lo[k]);
         for (std::int32_t j = nd.first; j < nd.first + n; ++j) {
           const std::int32_t i = out.order[j];
           const int b = bvh_detail::bin_of(cen[i][k], c.lo[k], scale);
@@ -167,7 +167,7 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
             m += count[s - 1];
           }
           if (m == 0 || right_n[s] == 0) continue;
-          const Num cost = Num(acc.half_area() * Num(m) + right_area[s] * Num(right_n[s]));
+          const Num cost = acc.half_area() * Num(m) + right_area[s] * Num(right_n[s]);
           if (axis_split == 0 || cost < axis_cost) axis_cost = cost, axis_split = s, axis_left = m;
         }
         if constexpr (Probe::on) probe.step(L::sweep, StepKind::advance).idx("axis", k).idx("s", axis_split).num("cost", axis_cost);
@@ -176,7 +176,7 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
     }
     const Num area = nd.box.half_area();
     if (best_axis >= 0) {
-      const Num leaf_cost = Num(Num(n) * area), split_cost = Num(Num(kBvhTraversalCost) * area + best_cost);
+      const Num leaf_cost = Num(n) * area, split_cost = Num(kBvhTraversalCost) * area + best_cost;
       const bool make_leaf = n <= kBvhMaxLeaf && !(split_cost < leaf_cost);
       if constexpr (Probe::on)
         probe.step(L::decide, StepKind::decide).idx("axis", best_axis).idx("s", best_split).num("leaf_cost", leaf_cost).num("split_cost", split_cost).idx("leaf", make_leaf);

@@ -75,10 +75,8 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
   using L = BvhTraverse;
   BvhHit<Num> out;
   auto box_test = [&](std::int32_t node) __attribute__((always_inline)) {
-    if constexpr (Probe::on) probe.enter(ray::RayBox::id, ray::RayBox::listing());
-    const ray::BoxHit<Num> h = ray::ray_box<Num>(r, bvh.nodes[node].box.lo, bvh.nodes[node].box.hi, probe);
-    if constexpr (Probe::on) probe.leave();
-    return h;
+    const auto call = nested<ray::RayBox>(probe);
+    return ray::ray_box<Num>(r, bvh.nodes[node].box.lo, bvh.nodes[node].box.hi, probe);
   };
   const ray::BoxHit<Num> root = box_test(0);
   if constexpr (Probe::on) {
@@ -106,23 +104,13 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
       for (std::int32_t j = nd.first; j < nd.first + nd.count; ++j) {
         const std::int32_t i = bvh.order[j];
         if (i == q.skip) continue;
-        if constexpr (Probe::on) {
-          probe.step(L::test, StepKind::visit).idx("prim", i);
-          probe.enter(ray::RayTriangleWatertight::id, ray::RayTriangleWatertight::listing());
-        }
-        const ray::TriangleHit<Num> h = ray::ray_triangle_watertight<Num>(r, tris[i], probe);
-        if constexpr (Probe::on) probe.leave();
-        ++out.prim_tests;
-        if (q.any) {
-          if (h.hit && h.t < q.t_max) {
-            out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-            if constexpr (Probe::on) probe.step(L::stop, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
-            stack.clear();
-            break;
-          }
-        } else if (h.hit && (!out.hit || h.t < out.t || (h.t == out.t && i < out.prim))) {
-          out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-          if constexpr (Probe::on) probe.step(L::keep, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
+        const ray::TriangleHit<Num> h = leaf_test<L>(out, tris, r, i, probe);
+        if (!q.any) {
+          keep_closest<L>(out, h, i, r, probe);
+        } else if (h.hit && h.t < q.t_max) {
+          take_hit<L>(out, h, i, r, L::stop, probe);
+          stack.clear();
+          break;
         }
       }
       continue;
@@ -147,10 +135,7 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
       bvh_detail::record_stack(s, bvh, stack);
     }
   }
-  if constexpr (Probe::on) {
-    auto& s = probe.step(L::done, out.hit ? StepKind::hit : StepKind::miss).idx("hit", out.hit);
-    if (out.hit) s.idx("prim", out.prim).num("t", out.t);
-  }
+  if constexpr (Probe::on) record_done<L>(out, probe);
   return out;
 }
 
@@ -158,10 +143,11 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
 template <NumberType Num, StepProbe Probe = NoProbe>
 BvhHit<Num> bvh_traverse(const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r, const BvhQuery<Num>& q, Probe& probe) {
   using L = BvhTraverse;
-  if constexpr (Probe::on) probe.enter(BvhBuild::id, BvhBuild::listing());
-  const Bvh<Num> bvh = bvh_build<Num>(tris, probe);
+  const Bvh<Num> bvh = [&] {
+    const auto call = nested<BvhBuild>(probe);
+    return bvh_build<Num>(tris, probe);
+  }();
   if constexpr (Probe::on) {
-    probe.leave();
     auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(bvh.nodes.size())).idx("depth", static_cast<std::int64_t>(bvh.depth));
     s.ray(r.o, r.d).keep();
     for (const auto& t : tris) s.triangle(t[0], t[1], t[2]).keep();  // the build's own items end with it

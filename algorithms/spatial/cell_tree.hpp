@@ -40,7 +40,7 @@ template <class Num, int D> int child_of(const VecN<Num, D>& p, const VecN<Num, 
 
 template <class Num, int D> VecN<Num, D> midpoint(const Box<Num, D>& b) {
   VecN<Num, D> m;
-  for (int a = 0; a < D; ++a) m[a] = Num(Num(b.lo[a] + b.hi[a]) / Num(2));
+  for (int a = 0; a < D; ++a) m[a] = (b.lo[a] + b.hi[a]) / Num(2);
   return m;
 }
 

@@ -26,8 +26,8 @@ struct Cell3 {
 // points just before x on an increasing walk), which differs only when x is on a cell boundary.
 template <NumberType Num> std::int64_t cell_index(const Num& x, bool from_below) {
   const std::int64_t f = num::floor_int(x);
-  const Num r = Num(x - Num(f));
-  const Num half = Num(Num(1) / Num(2));
+  const Num r = x - Num(f);
+  const Num half = Num(1) / Num(2);
   return from_below ? f + (half < r) : f + !(r < half);
 }
 
@@ -65,7 +65,7 @@ void grid_traverse_3d(const Vec3<Num>& p0, const Vec3<Num>& p1, std::vector<Cell
     last[a] = step[a] > 0 ? cell_index(p1[a], true) : step[a] < 0 ? cell_index(p1[a], false) : cell[a];
   }
   auto cell_box = [](const Cell3& c, Vec3<Num>& lo, Vec3<Num>& hi) {
-    for (int a = 0; a < 3; ++a) lo[a] = Num(Num(c[a]) - Num(0.5)), hi[a] = Num(Num(c[a]) + Num(0.5));
+    for (int a = 0; a < 3; ++a) lo[a] = Num(c[a]) - Num(0.5), hi[a] = Num(c[a]) + Num(0.5);
   };
   auto visit = [&](std::uint32_t line) {
     out.push_back(cell);
@@ -81,8 +81,8 @@ void grid_traverse_3d(const Vec3<Num>& p0, const Vec3<Num>& p1, std::vector<Cell
   for (int a = 0; a < 3; ++a) {
     left[a] = last[a] < cell[a] ? cell[a] - last[a] : last[a] - cell[a];
     if (step[a] == 0) continue;
-    t_delta[a] = Num(Num(step[a]) / d[a]);
-    t_max[a] = Num((Num(cell[a]) + Num(step[a] * 0.5) - p0[a]) / d[a]);
+    t_delta[a] = Num(step[a]) / d[a];
+    t_max[a] = (Num(cell[a]) + Num(step[a] * 0.5) - p0[a]) / d[a];
   }
   if constexpr (Probe::on) {
     probe.step(L::setup, StepKind::init).idx("step_x", step[0]).idx("step_y", step[1]).idx("step_z", step[2]).num("tDelta_x", t_delta[0]).num("tDelta_y", t_delta[1]).num("tDelta_z", t_delta[2]).idx("left_x", left[0]).idx("left_y", left[1]).idx("left_z", left[2]);
@@ -104,7 +104,7 @@ void grid_traverse_3d(const Vec3<Num>& p0, const Vec3<Num>& p1, std::vector<Cell
       for (int a = 0; a < 3; ++a) {
         if (!at_t[a] || step[a] != dir) continue;
         cell[a] += dir, --left[a];
-        t_max[a] = Num(t_max[a] + t_delta[a]);
+        t_max[a] = t_max[a] + t_delta[a];
         moved = true;
       }
       if (moved) visit(dir > 0 ? L::visit_up : L::visit_down);

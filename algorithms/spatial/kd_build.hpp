@@ -164,7 +164,7 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
             // less. (Skipping it spares filtered mode an undecidable tie; the first stays kept.)
             if (found_k && nl == nr && nl == nl_k && nr == nr_k) continue;
             const Num lam = nl == 0 || nr == 0 ? lam_empty : lam_full;
-            const Num c = Num(lam * Num(kt * a + ki * Num(al * Num(static_cast<int>(nl)) + ar * Num(static_cast<int>(nr)))));
+            const Num c = lam * (kt * a + ki * (al * Num(static_cast<int>(nl)) + ar * Num(static_cast<int>(nr))));
             if (!found_k || c < best_k) found_k = true, best_k = c, pos_k = p, nl_k = nl, nr_k = nr;
             if (!found || c < best) found = true, best = c, axis = k, pos = p, best_l = nl, best_r = nr, flat_left = s != 1;
           }
@@ -182,7 +182,7 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
         }
       }
     }
-    const Num leaf_cost = Num(lam_full * Num(ki * Num(nn * a)));
+    const Num leaf_cost = lam_full * (ki * (nn * a));
     const bool leaf = !found || !(best < leaf_cost) || depth >= max_depth || cur.count <= 1 || tree.nodes.size() + 2 > max_nodes;
     if (leaf) {
       auto& node = tree.nodes[id];

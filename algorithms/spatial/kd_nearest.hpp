@@ -40,15 +40,15 @@ struct KdNearest {
 template <class Num, int D> Num kd_cell_d2(const Box<Num, D>& c, const VecN<Num, D>& q) {
   Num s(0);
   for (int k = 0; k < D; ++k) {
-    if (q[k] < c.lo[k]) s = Num(s + Num(c.lo[k] - q[k]) * Num(c.lo[k] - q[k]));
-    else if (c.hi[k] < q[k]) s = Num(s + Num(q[k] - c.hi[k]) * Num(q[k] - c.hi[k]));
+    if (q[k] < c.lo[k]) s = s + (c.lo[k] - q[k]) * (c.lo[k] - q[k]);
+    else if (c.hi[k] < q[k]) s = s + (q[k] - c.hi[k]) * (q[k] - c.hi[k]);
   }
   return s;
 }
 
 template <class Num, int D> Num kd_point_d2(const VecN<Num, D>& p, const VecN<Num, D>& q) {
   Num s(0);
-  for (int k = 0; k < D; ++k) s = Num(s + Num(p[k] - q[k]) * Num(p[k] - q[k]));
+  for (int k = 0; k < D; ++k) s = s + (p[k] - q[k]) * (p[k] - q[k]);
   return s;
 }
 
@@ -131,10 +131,11 @@ KdNearestResult<Num> kd_nearest(const std::vector<VecN<Num, D>>& pts, const VecN
   std::vector<Box<Num, D>> bounds;
   bounds.reserve(pts.size());
   for (const auto& p : pts) bounds.push_back(Box<Num, D>::at(p));
-  if constexpr (Probe::on) probe.enter(KdBuild::id, KdBuild::listing());
-  const KdTree<Num, D> tree = kd_build<Num, D>(bounds, true, probe);
+  const KdTree<Num, D> tree = [&] {
+    const auto call = nested<KdBuild>(probe);
+    return kd_build<Num, D>(bounds, true, probe);
+  }();
   if constexpr (Probe::on) {
-    probe.leave();
     auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
     s.point(q).label("q").keep();
     for (const auto& p : pts) s.point(p).keep();  // the build's own items end with it

@@ -55,9 +55,10 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
   using L = KdTraverse;
   KdHit<Num> out;
   const Box<Num, 3>& root = tree.nodes[0].cell;
-  if constexpr (Probe::on) probe.enter(ray::RayBox::id, ray::RayBox::listing());
-  const ray::BoxHit<Num> box = ray::ray_box<Num>(r, root.lo, root.hi, probe);
-  if constexpr (Probe::on) probe.leave();
+  const ray::BoxHit<Num> box = [&] {
+    const auto call = nested<ray::RayBox>(probe);
+    return ray::ray_box<Num>(r, root.lo, root.hi, probe);
+  }();
   const Num zero(0);
   const Num t_root = box.t_near > zero ? box.t_near : zero;
   if constexpr (Probe::on) {
@@ -94,7 +95,7 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
         next = r.o[k] <= nd.split ? nd.left : nd.right;
         if constexpr (Probe::on) probe.step(L::parallel, StepKind::decide).idx("axis", k).num("p", nd.split).idx("left", next == nd.left);
       } else {
-        const Num ts = Num(Num(nd.split - r.o[k]) / r.d[k]);
+        const Num ts = (nd.split - r.o[k]) / r.d[k];
         const bool up = r.d[k] > zero;
         const std::int32_t first = up ? nd.left : nd.right, second = up ? nd.right : nd.left;
         if constexpr (Probe::on) probe.step(L::cross, StepKind::decide).idx("axis", k).num("p", nd.split).num("t_s", ts).idx("first", first).idx("second", second);
@@ -118,28 +119,13 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
         probe.step(L::descend, StepKind::visit).idx("node", e.node).num("t0", e.t0).num("t1", e.t1).node(e.node, tree.nodes[e.node].parent, c.lo, c.hi);
       }
     }
-    for (const std::int32_t i : tree.nodes[e.node].prims) {
-      if constexpr (Probe::on) {
-        probe.step(L::test, StepKind::visit).idx("prim", i);
-        probe.enter(ray::RayTriangleWatertight::id, ray::RayTriangleWatertight::listing());
-      }
-      const ray::TriangleHit<Num> h = ray::ray_triangle_watertight<Num>(r, tris[i], probe);
-      if constexpr (Probe::on) probe.leave();
-      ++out.prim_tests;
-      if (h.hit && (!out.hit || h.t < out.t || (h.t == out.t && i < out.prim))) {
-        out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-        if constexpr (Probe::on) probe.step(L::keep, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
-      }
-    }
+    for (const std::int32_t i : tree.nodes[e.node].prims) keep_closest<L>(out, leaf_test<L>(out, tris, r, i, probe), i, r, probe);
     if (out.hit && !(e.t1 < out.t)) {
       if constexpr (Probe::on) probe.step(L::exit, StepKind::decide).num("t_best", out.t).num("t1", e.t1);
       break;
     }
   }
-  if constexpr (Probe::on) {
-    auto& s = probe.step(L::done, out.hit ? StepKind::hit : StepKind::miss).idx("hit", out.hit);
-    if (out.hit) s.idx("prim", out.prim).num("t", out.t);
-  }
+  if constexpr (Probe::on) record_done<L>(out, probe);
   return out;
 }
 
@@ -150,10 +136,11 @@ KdHit<Num> kd_traverse(const std::vector<std::array<Vec3<Num>, 3>>& tris, const 
   std::vector<Box<Num, 3>> bounds;
   bounds.reserve(tris.size());
   for (const auto& t : tris) bounds.push_back(triangle_bounds(t));
-  if constexpr (Probe::on) probe.enter(KdBuild::id, KdBuild::listing());
-  const KdTree<Num, 3> tree = kd_build<Num, 3>(bounds, false, probe);
+  const KdTree<Num, 3> tree = [&] {
+    const auto call = nested<KdBuild>(probe);
+    return kd_build<Num, 3>(bounds, false, probe);
+  }();
   if constexpr (Probe::on) {
-    probe.leave();
     auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
     s.ray(r.o, r.d).keep();
     for (const auto& t : tris) s.triangle(t[0], t[1], t[2]).keep();

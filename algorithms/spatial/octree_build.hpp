@@ -18,9 +18,9 @@ namespace sw::spatial {
 template <NumberType Num> bool separates(const Vec3<Num>& a, const std::array<Vec3<Num>, 3>& t, const Box<Num, 3>& b) {
   Num bmin(0), bmax(0);
   for (int k = 0; k < 3; ++k) {
-    Num lo = Num(a[k] * b.lo[k]), hi = Num(a[k] * b.hi[k]);
+    Num lo = a[k] * b.lo[k], hi = a[k] * b.hi[k];
     if (hi < lo) std::swap(lo, hi);
-    bmin = Num(bmin + lo), bmax = Num(bmax + hi);
+    bmin = bmin + lo, bmax = bmax + hi;
   }
   Num tmin = dot(a, t[0]), tmax = tmin;
   for (int v = 1; v < 3; ++v) {

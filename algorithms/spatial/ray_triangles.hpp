@@ -43,22 +43,9 @@ TreeHit<Num> ray_triangles_with(const std::vector<std::array<Vec3<Num>, 3>>& tri
   }
   for (std::size_t k = 0; k < tris.size(); ++k) {  // bounded by the triangle count
     const auto i = static_cast<std::int32_t>(k);
-    if constexpr (Probe::on) {
-      probe.step(L::test, StepKind::visit).idx("prim", i);
-      probe.enter(Test::id, Test::listing());
-    }
-    const ray::TriangleHit<Num> h = Test{}(r, tris[k], probe);
-    if constexpr (Probe::on) probe.leave();
-    ++out.prim_tests;
-    if (h.hit && (!out.hit || h.t < out.t)) {  // in id order, an equal t keeps the lower id
-      out.hit = true, out.prim = i, out.t = h.t, out.b = h.b;
-      if constexpr (Probe::on) probe.step(L::keep, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
-    }
+    keep_closest<L>(out, leaf_test<L, Test>(out, tris, r, i, probe), i, r, probe);  // in id order: an equal t keeps the lower id
   }
-  if constexpr (Probe::on) {
-    auto& s = probe.step(L::done, out.hit ? StepKind::hit : StepKind::miss).idx("hit", out.hit);
-    if (out.hit) s.idx("prim", out.prim).num("t", out.t);
-  }
+  if constexpr (Probe::on) record_done<L>(out, probe);
   return out;
 }
 

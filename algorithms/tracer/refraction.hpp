@@ -9,6 +9,7 @@
 #pragma once
 #include <cmath>
 #include <string_view>
+#include "core/exact_sign.hpp"
 #include "lighting/brdf.hpp"
 #include "lighting/cook_torrance.hpp"
 #include "lighting/lighting_common.hpp"
@@ -41,17 +42,15 @@ Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N, const Num& n1,
   using L = Refract;
   Transmission<Num> out;
   const Vec3<Num> dn = lighting::unit(d), nn = lighting::unit(N);
-  out.cos_i = Num(-dot(dn, nn));
+  out.cos_i = -dot(dn, nn);
   const Num c = out.cos_i < Num(0) ? Num(0) : out.cos_i > Num(1) ? Num(1) : out.cos_i;
   if constexpr (Probe::on) probe.step(L::cosine, StepKind::init).num("c", c).ray(Vec3<Num>{}, dn).label("d");
-  const Vec3<Num> index{n1, n2, Num(0)};
-  out.tir = lighting::exact_sign([](const auto& D, const auto& M, const auto& I) {
-    using T = std::decay_t<decltype(D.x)>;
-    const T dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
-    return T(I.x * I.x * T(dd * mm - dm * dm) - I.y * I.y * dd * mm);
-  }, d, N, index) >= 0;
-  const Num eta = Num(n1 / n2);
-  out.guide_tir = Num(eta * std::sqrt(std::max(Num(0), Num(Num(1) - c)))) >= Num(1);
+  out.tir = num::exact_sign([](const auto& D, const auto& M, const auto& m1, const auto& m2) {
+    const auto dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
+    return m1 * m1 * (dd * mm - dm * dm) - m2 * m2 * dd * mm;
+  }, d, N, n1, n2) >= 0;
+  const Num eta = n1 / n2;
+  out.guide_tir = eta * std::sqrt(std::max(Num(0), Num(1) - c)) >= Num(1);
   if constexpr (Probe::on) probe.step(L::tir, StepKind::decide).idx("tir", out.tir).idx("guide_tir", out.guide_tir).num("eta", eta);
   if (out.tir) {
     out.fresnel = Num(1);
@@ -59,16 +58,16 @@ Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N, const Num& n1,
     return out;
   }
   // Not TIR exactly, so k >= 0 exactly; rounding may make it slightly negative: 0 then.
-  const Num k = std::max(Num(0), Num(Num(1) - eta * eta * Num(Num(1) - c * c)));
+  const Num k = std::max(Num(0), Num(1) - eta * eta * (Num(1) - c * c));
   const Num cos_t = std::sqrt(k);
-  out.dir = lighting::unit(Vec3<Num>(eta * dn + Num(eta * c - cos_t) * nn));
+  out.dir = lighting::unit(Vec3<Num>(eta * dn + (eta * c - cos_t) * nn));
   if constexpr (Probe::on) probe.step(L::direction, StepKind::advance).num("k", k).vec("T", out.dir).ray(Vec3<Num>{}, out.dir).label("T");
   if (fresnel == lighting::Fresnel::schlick) {
     const Num outer = n1 <= n2 ? c : cos_t;  // Schlick's formula takes the angle on the rarer side
-    out.fresnel = lighting::fresnel_schlick(outer, Num(n1 <= n2 ? n2 / n1 : n1 / n2));
+    out.fresnel = lighting::fresnel_schlick(outer, n1 <= n2 ? n2 / n1 : n1 / n2);
   } else {
-    const Num rel = Num(n2 / n1);  // g^2 = rel^2 + c^2 - 1 >= 0 exactly here; rounding may say otherwise
-    out.fresnel = c > Num(0) && Num(rel * rel + c * c - Num(1)) >= Num(0) ? lighting::fresnel_exact(c, rel) : Num(1);
+    const Num rel = n2 / n1;  // g^2 = rel^2 + c^2 - 1 >= 0 exactly here; rounding may say otherwise
+    out.fresnel = c > Num(0) && rel * rel + c * c - Num(1) >= Num(0) ? lighting::fresnel_exact(c, rel) : Num(1);
   }
   if constexpr (Probe::on) probe.step(L::fresnel, StepKind::done).num("F", out.fresnel);
   return out;

@@ -24,14 +24,14 @@ template <class Num> struct Surface {
 // gamma_k = k u / (1 - k u), u the unit roundoff: the classic bound on k roundings.
 template <class Num> constexpr Num gamma_bound(int k) {
   constexpr Num u = std::numeric_limits<Num>::epsilon() / 2;
-  return Num(k * u / (1 - k * u));
+  return k * u / (1 - k * u);
 }
 
 template <class Num> Vec3<Num> abs3(const Vec3<Num>& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
 template <class Num> Vec3<Num> unit3(const Vec3<Num>& v) {
   const Num m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-  const Vec3<Num> s{Num(v.x / m), Num(v.y / m), Num(v.z / m)};
-  return Num(Num(1) / std::sqrt(dot(s, s))) * s;
+  const Vec3<Num> s{v.x / m, v.y / m, v.z / m};
+  return (Num(1) / std::sqrt(dot(s, s))) * s;
 }
 
 // Preconditions: h.hit, and h from scene_hit on the same objects and ray.
@@ -43,8 +43,8 @@ template <class Num> Surface<Num> surface_at(const TraceObjects<Num>& s, const r
     case Shape::sphere: {
       const Vec3<Num> f = q - o.a;
       const Num len = std::sqrt(dot(f, f));
-      out.p = o.a + Num(o.radius / len) * f;
-      out.err = Num(gamma_bound<Num>(8)) * (abs3(o.a) + Vec3<Num>{o.radius, o.radius, o.radius});
+      out.p = o.a + (o.radius / len) * f;
+      out.err = gamma_bound<Num>(8) * (abs3(o.a) + Vec3<Num>{o.radius, o.radius, o.radius});
       NoProbe none;
       const ray::SphereUV<Num> uv = ray::sphere_uv<Num>(o.a, out.p, none);
       out.n = uv.normal, out.u = uv.u, out.v = uv.v;
@@ -52,8 +52,8 @@ template <class Num> Surface<Num> surface_at(const TraceObjects<Num>& s, const r
     }
     case Shape::plane: {
       const Num nn = dot(o.b, o.b);
-      out.p = q - Num(dot(o.b, Vec3<Num>(q - o.a)) / nn) * o.b;
-      out.err = Num(gamma_bound<Num>(10)) * (abs3(out.p) + abs3(o.a));
+      out.p = q - (dot(o.b, Vec3<Num>(q - o.a)) / nn) * o.b;
+      out.err = gamma_bound<Num>(10) * (abs3(out.p) + abs3(o.a));
       out.n = unit3(o.b);
       const int k = num::max_axis(o.b);  // u, v: the two other axes of the dominant one
       out.u = out.p[(k + 1) % 3], out.v = out.p[(k + 2) % 3];
@@ -68,18 +68,18 @@ template <class Num> Surface<Num> surface_at(const TraceObjects<Num>& s, const r
         for (int k = 0; k < 3 && face < 0; ++k) {
           if (r.d[k] == Num(0)) continue;
           const bool hi_side = (r.d[k] > Num(0)) == (pass == 1);  // pass 0: the near bound; pass 1: the far
-          if (Num(Num((hi_side ? o.b[k] : o.a[k]) - r.o[k]) / r.d[k]) == h.t) face = k, high = hi_side;
+          if (((hi_side ? o.b[k] : o.a[k]) - r.o[k]) / r.d[k] == h.t) face = k, high = hi_side;
         }
       if (face < 0) face = num::max_axis(r.d), high = r.d[face] < Num(0);  // unreachable when h came from ray-box
       out.p = q;
       for (int k = 0; k < 3; ++k) out.p[k] = std::min(std::max(q[k], o.a[k]), o.b[k]);
       out.p[face] = high ? o.b[face] : o.a[face];  // exact: the face's own coordinate
-      out.err = Num(gamma_bound<Num>(4)) * (abs3(r.o) + abs3(Vec3<Num>(h.t * r.d)));
+      out.err = gamma_bound<Num>(4) * (abs3(r.o) + abs3(Vec3<Num>(h.t * r.d)));
       out.err[face] = Num(0);
       out.n = Vec3<Num>{};
       out.n[face] = high ? Num(1) : Num(-1);
       const int a = (face + 1) % 3, b = (face + 2) % 3;
-      auto along = [&](int k) { return o.b[k] > o.a[k] ? Num(Num(out.p[k] - o.a[k]) / Num(o.b[k] - o.a[k])) : Num(0); };
+      auto along = [&](int k) { return o.b[k] > o.a[k] ? (out.p[k] - o.a[k]) / (o.b[k] - o.a[k]) : Num(0); };
       out.u = along(a), out.v = along(b);
       break;
     }
@@ -88,7 +88,7 @@ template <class Num> Surface<Num> surface_at(const TraceObjects<Num>& s, const r
       const Triangle3<Num>& v = o.shape == Shape::triangle ? o.v : s.meshes[static_cast<std::size_t>(o.mesh)].tris[static_cast<std::size_t>(h.prim)];
       const Vec3<Num> p0 = h.b[0] * v[0], p1 = h.b[1] * v[1], p2 = h.b[2] * v[2];
       out.p = p0 + p1 + p2;
-      out.err = Num(gamma_bound<Num>(7)) * (abs3(p0) + abs3(p1) + abs3(p2));
+      out.err = gamma_bound<Num>(7) * (abs3(p0) + abs3(p1) + abs3(p2));
       out.n = unit3(cross(Vec3<Num>(v[1] - v[0]), Vec3<Num>(v[2] - v[0])));
       out.u = h.b[1], out.v = h.b[2];
       break;

@@ -77,9 +77,8 @@ Hit<Num> object_hit(const TraceObjects<Num>& s, int k, const ray::Ray3<Num>& r, 
   const Prim<Num>& o = s.objects[static_cast<std::size_t>(k)];
   Hit<Num> h;
   auto run = [&]<class Algo>(std::type_identity<Algo>, auto&& test) {
-    if constexpr (Probe::on) probe.enter(Algo::id, Algo::listing());
+    const auto call = nested<Algo>(probe);
     test();
-    if constexpr (Probe::on) probe.leave();
   };
   switch (o.shape) {
     case Shape::sphere:

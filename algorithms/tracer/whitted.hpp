@@ -112,9 +112,10 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
   // The colour seen through image point (i + di, j + dj); a fisheye's point outside its circle
   // sees the background.
   Vec3<Num> sample(std::int64_t i, std::int64_t j, const Num& di, const Num& dj) {
-    if constexpr (Probe::on) probe_.enter(ray::CameraRayAlgo::id, ray::CameraRayAlgo::listing());
-    const ray::CameraRay<Num> cr = ray::camera_ray_at(s_.camera, i, j, di, dj, probe_);
-    if constexpr (Probe::on) probe_.leave();
+    const ray::CameraRay<Num> cr = [&] {
+      const auto call = nested<ray::CameraRayAlgo>(probe_);
+      return ray::camera_ray_at(s_.camera, i, j, di, dj, probe_);
+    }();
     if (!cr.valid) return s_.background;
     ++counts_.primary;
     --budget_;
@@ -123,10 +124,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
 
   Vec3<Num> trace(const ray::Ray3<Num>& r, int depth, const Num& weight, const Leaving& from) {
     using L = Whitted;
-    if constexpr (Probe::on) probe_.enter(SceneHit::id, SceneHit::listing());
-    const Hit<Num> h = scene_hit(s_, r, false, Num(0), from, probe_);
+    const Hit<Num> h = [&] {
+      const auto call = nested<SceneHit>(probe_);
+      return scene_hit(s_, r, false, Num(0), from, probe_);
+    }();
     if constexpr (Probe::on) {
-      probe_.leave();
       auto& st = probe_.step(L::closest, h.hit ? StepKind::hit : StepKind::miss).idx("depth", depth).num("weight", weight).idx("object", h.object).num("t", h.t);
       // The ray tree: each ray to its hit, labelled by depth; the primary also shows the scene.
       const char* label = kDepthLabels[depth < kDepthLabelCount ? depth : kDepthLabelCount - 1];
@@ -156,12 +158,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     const Leaving here = s_.offset == Offset::robust ? Leaving{h.object, h.prim} : Leaving{};
     shading_.blocked = shadows(sf, ns, here);
     shading_.p = sf.p, shading_.n = ns, shading_.eye = r.o, shading_.material = mat;
-    if constexpr (Probe::on) probe_.enter(lighting::Shade::id, lighting::Shade::listing());
-    Vec3<Num> c = lighting::shade(shading_, probe_).rgb;
-    if constexpr (Probe::on) {
-      probe_.leave();
-      probe_.step(L::local, StepKind::init).colour("c", c);
-    }
+    Vec3<Num> c = [&] {
+      const auto call = nested<lighting::Shade>(probe_);
+      return lighting::shade(shading_, probe_).rgb;
+    }();
+    if constexpr (Probe::on) probe_.step(L::local, StepKind::init).colour("c", c);
     if (plan_.caustics && s_.caustics && !(mat.kd == Vec3<Num>{})) {
       const Vec3<Num> e = caustic_irradiance(*s_.caustics, sf.p);
       if (!(e == Vec3<Num>{})) c = c + lighting::times(mat.kd, e);
@@ -176,16 +177,15 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     tr.fresnel = Num(0), tr.tir = true;
     if (plan_.refraction[mi]) {
       const Num n1 = entering ? Num(1) : m.ior, n2 = entering ? m.ior : Num(1);
-      if constexpr (Probe::on) probe_.enter(Refract::id, Refract::listing());
-      tr = refract(r.d, ns, n1, n2, m.shading.params.fresnel, probe_);
-      if constexpr (Probe::on) {
-        probe_.leave();
-        probe_.step(L::split, StepKind::decide).idx("tir", tr.tir).num("F", tr.fresnel);
+      {
+        const auto call = nested<Refract>(probe_);
+        tr = refract(r.d, ns, n1, n2, m.shading.params.fresnel, probe_);
       }
+      if constexpr (Probe::on) probe_.step(L::split, StepKind::decide).idx("tir", tr.tir).num("F", tr.fresnel);
     }
-    const Num wr = Num(m.kr + m.kt * tr.fresnel), wt = Num(m.kt * Num(Num(1) - tr.fresnel));
+    const Num wr = m.kr + m.kt * tr.fresnel, wt = m.kt * (Num(1) - tr.fresnel);
     if (plan_.reflection[mi]) {
-      const Vec3<Num> dir = r.d - Num(Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
+      const Vec3<Num> dir = r.d - (Num(2) * dot(r.d, ns) / dot(ns, ns)) * ns;
       if constexpr (Probe::on) probe_.step(L::reflect, StepKind::advance).num("wr", wr).ray(sf.p, dir).label("mirror").value(wr);
       add(c, wr, weight, sf, here, dir, depth, counts_.reflection);
     }
@@ -209,10 +209,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
       if (!plan_.shadows[i] || to_light == Vec3<Num>{} || lighting::sign_dot(ns, to_light) <= 0) continue;
       const auto [sr, t_max] = shadow_ray(li, origin(sf, to_light));
       ++counts_.shadow;
-      if constexpr (Probe::on) probe_.enter(SceneHit::id, SceneHit::listing());
-      const bool hit = scene_hit(s_, sr, true, t_max, here, probe_).hit;
+      const bool hit = [&] {
+        const auto call = nested<SceneHit>(probe_);
+        return scene_hit(s_, sr, true, t_max, here, probe_).hit;
+      }();
       if constexpr (Probe::on) {
-        probe_.leave();
         auto& st = probe_.step(L::shadow, hit ? StepKind::hit : StepKind::miss).idx("i", std::int64_t(i)).idx("blocked", hit);
         if (positional) st.segment(sr.o, Vec3<Num>(sr.o + sr.d)).label(hit ? "blocked" : "lit").keep();  // to the light
         else st.ray(sr.o, sr.d).label(hit ? "blocked" : "lit").keep();
@@ -226,7 +227,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
   // an ancestor of weight 0) adds nothing: only --all-effects casts it, from its own allowance, so
   // both plans spend the pixel's budget on the same rays.
   void add(Vec3<Num>& c, const Num& w, const Num& weight, const Surface<Num>& sf, const Leaving& here, const Vec3<Num>& dir, int depth, std::uint64_t& count) {
-    const Num path = Num(weight * w);
+    const Num path = weight * w;
     std::int64_t& allowance = path > Num(0) ? budget_ : spare_;
     if (!(path > Num(0)) && !plan_.zero_weight) return;
     if (allowance <= 0) {
@@ -236,9 +237,10 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     }
     --allowance;
     ++count;
-    if constexpr (Probe::on) probe_.enter(Whitted::id, Whitted::listing());
-    const Vec3<Num> sub = trace({origin(sf, dir), dir}, depth + 1, path, here);
-    if constexpr (Probe::on) probe_.leave();
+    const Vec3<Num> sub = [&] {
+      const auto call = nested<Whitted>(probe_);
+      return trace({origin(sf, dir), dir}, depth + 1, path, here);
+    }();
     if (w > Num(0)) c = c + w * sub;
   }
 
