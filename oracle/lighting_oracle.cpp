@@ -44,7 +44,7 @@ struct Builder {
 
 }  // namespace
 
-OracleTerm term(std::string_view model, lighting::DiffuseModel diffuse, const Vec3<Rational>& N, const Vec3<Rational>& L,
+OracleTerm term(const lighting::ModelChoice& c, const Vec3<Rational>& N, const Vec3<Rational>& L,
                 const Vec3<Rational>& E, const lighting::ModelParams<Rational>& p) {
   Builder b;
   OracleTerm& o = b.out;
@@ -110,20 +110,20 @@ OracleTerm term(std::string_view model, lighting::DiffuseModel diffuse, const Ve
     return D;
   };
   Big value;
-  if (model == "lambert" || model == "minnaert" || model == "oren-nayar") {
-    value = diffuse_value(model == "lambert" ? lighting::DiffuseModel::lambert
-                          : model == "minnaert" ? lighting::DiffuseModel::minnaert
-                                                : lighting::DiffuseModel::oren_nayar);
+  using lighting::SpecularModel;
+  const lighting::DiffuseModel diffuse = c.diffuse;
+  if (!c.specular && !p.toon) {
+    value = diffuse_value(diffuse);
     b.put("d", value);
-  } else if (model == "toon") {
+  } else if (!c.specular) {  // toon over the diffuse model
     const Big d = diffuse_value(diffuse);
-    const Rational c = *p.toon;
+    const Rational cut = *p.toon;
     const bool lambert_like = diffuse == lighting::DiffuseModel::lambert || (diffuse == lighting::DiffuseModel::minnaert && p.minnaert_k == 1) ||
                               (diffuse == lighting::DiffuseModel::oren_nayar && sgn(p.sigma) == 0);
-    const bool above = lambert_like ? NL * NL >= c * c * NN * LL : !(d < Big(c));
+    const bool above = lambert_like ? NL * NL >= cut * cut * NN * LL : !(d < Big(cut));
     b.put("d", d), b.put("above", Big(above)), b.put("t", Big(above));
     value = Big(above);
-  } else if (model == "phong") {
+  } else if (c.spec == SpecularModel::phong) {
     // Phong 1975: cos^n of the angle between the mirror direction and the eye;
     // cos = 2 cos(ti) cos(tr) - cos(l, e).
     const Big rc = Big(2) * ci * cr - cle;
@@ -131,39 +131,39 @@ OracleTerm term(std::string_view model, lighting::DiffuseModel diffuse, const Ve
     value = mirror_front ? pow_b(rc, Big(p.shininess)) : Big(0);
     if (sgn(p.shininess) == 0 && mirror_front) value = Big(1);
     b.put("s", value);
-  } else if (model == "blinn-phong") {
+  } else if (c.spec == SpecularModel::blinn_phong) {
     half();
     value = sgn(p.shininess) == 0 ? Big(1) : pow_b(ch, Big(p.shininess));
     b.put("s", value);
-  } else if (model == "gaussian") {
+  } else if (c.spec == SpecularModel::gaussian) {
     half();
     const Big q = alpha_h / Big(p.m);
     b.put("alpha", alpha_h);
     value = exp_b(-(q * q));
     b.put("s", value);
-  } else if (model == "beckmann") {
+  } else if (c.spec == SpecularModel::beckmann) {
     half();
     value = pi_b() * beckmann_d() / (Big(4) * cr);
     b.put("s", value);
-  } else if (model == "cook-torrance") {
+  } else if (c.spec == SpecularModel::cook_torrance) {
     half();
     const Big D = beckmann_d();
     // The facet sees the light at the half angle: cos = |l + e|/2.
-    const Big c = len_h / Big(2), eta = Big(p.ior);
-    b.put("eh", c);
+    const Big ce = len_h / Big(2), eta = Big(p.ior);
+    b.put("eh", ce);
     Big F(1);
     if (p.fresnel == lighting::Fresnel::exact) {  // Cook & Torrance 1982, unpolarised
-      const Big g = sqrt_b(eta * eta + c * c - Big(1));
-      const Big u = (g - c) / (g + c), v = (c * (g + c) - Big(1)) / (c * (g - c) + Big(1));
+      const Big g = sqrt_b(eta * eta + ce * ce - Big(1));
+      const Big u = (g - ce) / (g + ce), v = (ce * (g + ce) - Big(1)) / (ce * (g - ce) + Big(1));
       F = Big(Rational(1, 2)) * u * u * (Big(1) + v * v);
     } else if (p.fresnel == lighting::Fresnel::schlick) {  // Schlick 1994
       const Big r0 = (eta - Big(1)) / (eta + Big(1)), f0 = r0 * r0;
-      F = f0 + (Big(1) - f0) * pow_b(Big(1) - c, Big(5));
+      F = f0 + (Big(1) - f0) * pow_b(Big(1) - ce, Big(5));
     }
     if (p.fresnel != lighting::Fresnel::one) b.put("F", F);
     Big G(1);
     if (p.shadowing) {
-      G = min_b(Big(1), min_b(Big(2) * ch * cr / c, Big(2) * ch * ci / c));
+      G = min_b(Big(1), min_b(Big(2) * ch * cr / ce, Big(2) * ch * ci / ce));
       b.put("G", G);
     }
     value = pi_b() * D * F * G / (Big(4) * cr);

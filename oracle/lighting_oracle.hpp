@@ -22,9 +22,9 @@ struct OracleTerm {
   std::map<std::string, Rational> named;
 };
 
-// model: lambert, minnaert, oren-nayar, toon (p.toon set, `diffuse` the inner model), phong,
-// blinn-phong, gaussian, beckmann, cook-torrance. N, L, E non-zero.
-OracleTerm term(std::string_view model, lighting::DiffuseModel diffuse, const Vec3<Rational>& N, const Vec3<Rational>& L,
+// The model `c` names: a diffuse model (toon when p.toon is set, over c.diffuse) or a specular one.
+// N, L, E non-zero.
+OracleTerm term(const lighting::ModelChoice& c, const Vec3<Rational>& N, const Vec3<Rational>& L,
                 const Vec3<Rational>& E, const lighting::ModelParams<Rational>& p);
 
 }  // namespace sw::lighting_oracle

@@ -201,7 +201,7 @@ TEST_CASE("views image: a shaded float sweep differs from reference by over 1/25
   for (int j = 0; j < g.h; ++j)
     for (int i = 0; i < g.w; ++i) {
       const Json s = alg.open(input).sweep_sample(g, i, j);
-      const float ref = static_cast<float>(lighting_oracle::term("blinn-phong", lighting::DiffuseModel::lambert, vec(s["n"]), vec(input["l"]), vec(input["e"]), p).value.get_d());
+      const float ref = static_cast<float>(lighting_oracle::term({.specular = true, .spec = lighting::SpecularModel::blinn_phong}, vec(s["n"]), vec(input["l"]), vec(input["e"]), p).value.get_d());
       const float flt = static_cast<float>(alg.open(s, Numeric::f32).run()["value"].get<double>());
       const std::size_t k = std::size_t(j) * g.w + i;
       INFO("sample (" << i << ", " << j << ")");

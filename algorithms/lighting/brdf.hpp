@@ -30,6 +30,13 @@ enum class DiffuseModel : std::uint8_t { lambert, minnaert, oren_nayar };
 enum class SpecularModel : std::uint8_t { none, phong, blinn_phong, gaussian, beckmann, cook_torrance };
 enum class Fresnel : std::uint8_t { exact, schlick, one };  // one: F = 1 (the limit test against beckmann)
 
+// Which model an entry runs: a diffuse one (toon: with p.toon set) or a specular one.
+struct ModelChoice {
+  bool specular = false;
+  DiffuseModel diffuse = DiffuseModel::lambert;
+  SpecularModel spec = SpecularModel::none;
+};
+
 // Every model's parameters (each model reads its own; the runtime checks their ranges).
 template <class Num> struct ModelParams {
   Num minnaert_k{1};        // minnaert: k in [0, 1]; k = 1 is Lambert

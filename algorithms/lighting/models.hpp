@@ -69,13 +69,6 @@ inline std::string_view model_name(SpecularModel m) {
   return "?";
 }
 
-// Which model an entry runs: a diffuse one (toon: with p.toon set) or a specular one.
-struct ModelChoice {
-  bool specular = false;
-  DiffuseModel diffuse = DiffuseModel::lambert;
-  SpecularModel spec = SpecularModel::none;
-};
-
 // The whole model on raw N, L, E (non-zero) with its steps on listing L: the frame, then the term
 // (the diffuse model inside toon runs nested). `given`: the decisions made on the exact input;
 // frame_out, if set, receives the frame.

@@ -1,5 +1,7 @@
 #include "lighting/lighting_input.hpp"
+#include <algorithm>
 #include <cmath>
+#include "lighting/model_table.hpp"
 
 namespace sw::lighting_io {
 
@@ -28,17 +30,6 @@ Rational number_in(const Json& obj, const char* key, const Rational& lo, const R
   return x;
 }
 
-DiffuseModel parse_diffuse(const Json& v, const std::string& what) {
-  if (v.is_string()) {
-    const std::string s = v.get<std::string>();
-    if (s == "lambert") return DiffuseModel::lambert;
-    if (s == "minnaert") return DiffuseModel::minnaert;
-    if (s == "oren-nayar") return DiffuseModel::oren_nayar;
-    throw InputError(what + ": unknown diffuse model '" + s + "' (lambert, minnaert, oren-nayar)");
-  }
-  throw InputError(what + ": expected \"lambert\", \"minnaert\" or \"oren-nayar\"");
-}
-
 Fresnel parse_fresnel(const Json& v, const std::string& what) {
   if (v.is_string()) {
     const std::string s = v.get<std::string>();
@@ -50,71 +41,34 @@ Fresnel parse_fresnel(const Json& v, const std::string& what) {
   throw InputError(what + ": expected \"exact\", \"schlick\" or \"one\"");
 }
 
-namespace {
-
-const Rational kZero(0), kOne(1), kMaxShininess(1000000), kMaxM(100), kMaxIor(100);
-
-void diffuse_params(DiffuseModel m, const Json& j, ModelParams<Rational>& p) {
-  if (m == DiffuseModel::minnaert) p.minnaert_k = number_in(j, "k", kZero, kOne, false, "input");
-  if (m == DiffuseModel::oren_nayar) p.sigma = number_in(j, "sigma", kZero, kOne, false, "input");
-}
-
-}  // namespace
-
 ModelInput parse_model_input(std::string_view id, const Json& j) {
   if (!j.is_object()) throw InputError("input: expected an object");
+  const ModelRow& row = model_row(id);
   ModelInput in;
-  auto keys = [&](std::initializer_list<const char*> extra, std::initializer_list<const char*> optional = {}) {
-    std::vector<const char*> all = {"n", "l", "e"};
-    all.insert(all.end(), extra.begin(), extra.end());
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      bool known = false;
-      for (const char* k : all) known = known || it.key() == k;
-      for (const char* k : optional) known = known || it.key() == k;
-      if (!known) throw InputError("input: unknown field \"" + it.key() + "\" for " + std::string(id));
-    }
-    for (const char* k : all) (void)require(j, k, "input");
-  };
-  auto& c = in.choice;
-  if (id == "lambert") {
-    keys({});
-  } else if (id == "minnaert") {
-    keys({"k"});
-    c.diffuse = DiffuseModel::minnaert;
-  } else if (id == "oren-nayar") {
-    keys({"sigma"});
-    c.diffuse = DiffuseModel::oren_nayar;
-  } else if (id == "toon") {
-    c.diffuse = parse_diffuse(require(j, "diffuse", "input"), "input.diffuse");
-    if (c.diffuse == DiffuseModel::minnaert) keys({"diffuse", "cutoff", "k"});
-    else if (c.diffuse == DiffuseModel::oren_nayar) keys({"diffuse", "cutoff", "sigma"});
-    else keys({"diffuse", "cutoff"});
-    in.p.toon = number_in(j, "cutoff", kZero, kOne, false, "input");
-  } else if (id == "phong" || id == "blinn-phong") {
-    keys({"shininess"});
-    c.specular = true;
-    c.spec = id == "phong" ? SpecularModel::phong : SpecularModel::blinn_phong;
-    in.p.shininess = number_in(j, "shininess", kZero, kMaxShininess, false, "input");
-  } else if (id == "gaussian" || id == "beckmann") {
-    keys({"m"});
-    c.specular = true;
-    c.spec = id == "gaussian" ? SpecularModel::gaussian : SpecularModel::beckmann;
-  } else if (id == "cook-torrance") {
-    keys({"m", "ior", "fresnel"}, {"shadowing"});
-    c.specular = true;
-    c.spec = SpecularModel::cook_torrance;
-    in.p.ior = number_in(j, "ior", kOne, kMaxIor, false, "input");
+  in.choice = row.choice;
+  std::vector<const ModelParam*> params;
+  std::vector<std::string_view> keys = {"n", "l", "e"}, optional;
+  if (row.toon) {
+    const ModelRow& inner = diffuse_row(require(j, "diffuse", "input"), "input.diffuse");
+    in.choice.diffuse = inner.choice.diffuse;
+    keys.push_back("diffuse");
+    params = inner.params;
+  }
+  params.insert(params.end(), row.params.begin(), row.params.end());
+  for (const ModelParam* p : params) keys.push_back(p->key);
+  if (row.fresnel) keys.push_back("fresnel"), optional.push_back("shadowing");
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (std::find(keys.begin(), keys.end(), it.key()) == keys.end() && std::find(optional.begin(), optional.end(), it.key()) == optional.end())
+      throw InputError("input: unknown field \"" + it.key() + "\" for " + std::string(id));
+  for (std::string_view k : keys) (void)require(j, std::string(k).c_str(), "input");
+  for (const ModelParam* p : params) p->set(in.p, number_in(j, std::string(p->key).c_str(), Rational(p->lo), Rational(p->hi), p->lo_open, "input"));
+  if (row.fresnel) {
     in.p.fresnel = parse_fresnel(j["fresnel"], "input.fresnel");
     if (j.contains("shadowing")) {
       if (!j["shadowing"].is_boolean()) throw InputError("input.shadowing: expected true or false");
       in.p.shadowing = j["shadowing"].get<bool>();
     }
-  } else {
-    throw InputError("input: unknown reflection model '" + std::string(id) + "'");
   }
-  if (!c.specular) diffuse_params(c.diffuse, j, in.p);
-  if (c.spec == SpecularModel::gaussian || c.spec == SpecularModel::beckmann || c.spec == SpecularModel::cook_torrance)
-    in.p.m = number_in(j, "m", kZero, kMaxM, true, "input");
   in.n = direction3(j, "n", "input");
   in.l = direction3(j, "l", "input");
   in.e = direction3(j, "e", "input");

@@ -1,4 +1,4 @@
-// What shade.cpp, gouraud.cpp, the tests and the GL peer share: shade's output (doubles of the
+// What shade_spec.cpp, gouraud.cpp, the tests and the GL peer share: shade's output (doubles of the
 // mode's values, and the reference's rationals), its JSON, its error, and the seeded scenes (random
 // ones in GL's ranges with float inputs, and the hard set: spots exactly on their cut-off, grazing
 // lights and eyes, lights at the point, non-unit, huge, tiny and subnormal vectors).

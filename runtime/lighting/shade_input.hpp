@@ -1,4 +1,4 @@
-// The input of `shade` and `gouraud-vs-phong` (shade.cpp): the scene in exact rationals, parsed and
+// The input of `shade` and `gouraud-vs-phong` (shade_spec.cpp): the scene in exact rationals, parsed and
 // validated (every failure one InputError line), and converted to a number type. The JSON shape
 // and the defaults (OpenGL's): docs/lighting/shade.md.
 #pragma once

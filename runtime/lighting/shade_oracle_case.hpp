@@ -1,4 +1,4 @@
-// A scene as the independent oracle takes it (oracle/lighting_shade_oracle.hpp), for shade.cpp, the
+// A scene as the independent oracle takes it (oracle/lighting_shade_oracle.hpp), for shade_spec.cpp, the
 // tests and the GL peer (each links sw_oracle).
 #pragma once
 #include "lighting/shade.hpp"

@@ -294,7 +294,7 @@ template <class AlgoT, Prim P> struct RaySpec {
   static Json sweep_input(Json j, const Input& in, const SweepGrid& g, int i, int k) {
     const SweepFrame f = sweep_frame(in, P, g.inputs);
     const std::array<double, 3> o = sample_origin(f, g, i, k);
-    j["ray"] = Json{{"o", {o[0], o[1], o[2]}}, {"d", {f.d[0], f.d[1], f.d[2]}}};  // Json{…}: see models.cpp's sweep_input
+    j["ray"] = Json{{"o", {o[0], o[1], o[2]}}, {"d", {f.d[0], f.d[1], f.d[2]}}};  // Json{…}: see lighting/model_specs.cpp's sweep_input
     return j;
   }
   static float sweep_value(const Output& o) {

@@ -65,8 +65,8 @@ template <class Num> Num run_model(std::string_view id, const ModelInput& in) {
   return run_model<Num>(id, in, none);
 }
 
-inline lighting_oracle::OracleTerm oracle_of(std::string_view id, const ModelInput& in) {
-  return lighting_oracle::term(id, in.choice.diffuse, in.n, in.l, in.e, in.p);
+inline lighting_oracle::OracleTerm oracle_of(std::string_view, const ModelInput& in) {
+  return lighting_oracle::term(in.choice, in.n, in.l, in.e, in.p);
 }
 
 // |got - want| <= 2^-rel |want| + 2^-abs.

@@ -13,6 +13,7 @@
 #include <mpfr.h>
 #include "register.hpp"
 #include "lighting/lighting_input.hpp"
+#include "lighting/model_table.hpp"
 #include "lighting/models.hpp"
 #include "lighting_oracle.hpp"
 
@@ -37,12 +38,6 @@ struct ModelOutput {
     return a.lit == b.lit && a.seen == b.seen && a.failure == b.failure;
   }
 };
-
-// The models whose exact term lies in [0, 1] (a rounded value above 1 is an energy gain).
-bool bounded_by_one(const ModelChoice& c) {
-  if (!c.specular) return c.diffuse == DiffuseModel::lambert;
-  return c.spec == SpecularModel::phong || c.spec == SpecularModel::blinn_phong || c.spec == SpecularModel::gaussian;
-}
 
 template <class Num> ModelParams<Num> params_as(const ModelParams<Rational>& q) {
   auto f = [](const Rational& x) { return num::from_rational<Num>(x); };
@@ -142,16 +137,6 @@ Vec3<double> vec_of(const lighting_oracle::OracleTerm& o, const char* k) {
   return {at(".x"), at(".y"), at(".z")};
 }
 
-// The sliders: each shows when the input has its key (toon's k or sigma with its diffuse model).
-std::vector<Param> model_params() {
-  return {{"/k", "k", 0, 1, false, "Minnaert's darkening exponent: 1 is Lambert, lower darkens the limb less"},
-          {"/sigma", "sigma", 0, 1, false, "Oren-Nayar's slope spread in radians: 0 is Lambert"},
-          {"/cutoff", "cutoff", 0, 1, false, "toon: the diffuse value at which the band switches"},
-          {"/shininess", "shininess", 0, 10000, true, "the highlight exponent n"},
-          {"/m", "m", 0.001, 1, true, "the RMS slope of the microfacets: lower is glossier"},
-          {"/ior", "ior", 1, 3, false, "the index of refraction in the Fresnel term"}};
-}
-
 template <class A> struct ModelSpec {
   using Algo = A;
   static constexpr std::array hooks{Hook::error,      Hook::handles, Hook::sweeper, Hook::sweep_caption, Hook::sweep_input, Hook::sweep_shaded,
@@ -161,13 +146,13 @@ template <class A> struct ModelSpec {
   using Output = ModelOutput;
   static constexpr std::array views{View::orbit3d, View::image, View::lobe};
   static constexpr std::string_view compare_group = "reflection models";
-  static std::vector<Param> params() { return model_params(); }
+  static std::vector<Param> params() { return lighting_io::model_sliders(); }
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static const std::string example;
   static Input parse(const Json& j) { return lighting_io::parse_model_input(Algo::id, j); }
   static std::vector<Handle> handles() { return {{"/l", Handle::Kind::direction3, 0, "l"}, {"/e", Handle::Kind::direction3, 0, "e"}}; }
   template <class Num> static Prepared<Num> prepare(const Input& in) {
-    return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, bounded_by_one(in.choice)};
+    return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, lighting_io::model_row(Algo::id).bounded};
   }
   // The image view: the model over a sphere's normals, l and e as given, decisions exact per sample.
   static constexpr std::string_view sweep_caption = "normals of a unit sphere seen from +z, l and e as given";
@@ -257,7 +242,7 @@ template <class A> struct ModelSpec {
   }
   static std::size_t ops(const Output&) { return 1; }
   static Output oracle(const Input& in) {
-    const auto t = lighting_oracle::term(Algo::id, in.choice.diffuse, in.n, in.l, in.e, in.p);
+    const auto t = lighting_oracle::term(in.choice, in.n, in.l, in.e, in.p);
     Output o;
     o.lit = t.lit, o.seen = t.seen, o.bits = 400;
     o.value = t.value.get_d();
@@ -274,43 +259,24 @@ template <class A> struct ModelSpec {
   static std::vector<BenchSet<Input>> bench_sets();
 };
 
-// The examples (the first listed parameters are the model's own).
-template <> const std::string ModelSpec<Lambert>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2]})";
-template <> const std::string ModelSpec<Minnaert>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2],"k":0.5})";
-template <> const std::string ModelSpec<OrenNayar>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[1,1,2],"sigma":0.5})";
-template <> const std::string ModelSpec<Toon>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2],"diffuse":"lambert","cutoff":0.5})";
-template <> const std::string ModelSpec<Phong>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"shininess":20})";
-template <> const std::string ModelSpec<BlinnPhong>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"shininess":20})";
-template <> const std::string ModelSpec<Gaussian>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})";
-template <> const std::string ModelSpec<Beckmann>::example = R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})";
-template <> const std::string ModelSpec<CookTorrance>::example =
-    R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3,"ior":1.5,"fresnel":"exact"})";
+// The examples are the table's (explicit specialisations: initialised in order, before the registrars below).
+template <> const std::string ModelSpec<Lambert>::example{lighting_io::model_row(Lambert::id).example};
+template <> const std::string ModelSpec<Minnaert>::example{lighting_io::model_row(Minnaert::id).example};
+template <> const std::string ModelSpec<OrenNayar>::example{lighting_io::model_row(OrenNayar::id).example};
+template <> const std::string ModelSpec<Toon>::example{lighting_io::model_row(Toon::id).example};
+template <> const std::string ModelSpec<Phong>::example{lighting_io::model_row(Phong::id).example};
+template <> const std::string ModelSpec<BlinnPhong>::example{lighting_io::model_row(BlinnPhong::id).example};
+template <> const std::string ModelSpec<Gaussian>::example{lighting_io::model_row(Gaussian::id).example};
+template <> const std::string ModelSpec<Beckmann>::example{lighting_io::model_row(Beckmann::id).example};
+template <> const std::string ModelSpec<CookTorrance>::example{lighting_io::model_row(CookTorrance::id).example};
 
 // Seeded sets: "random" frames (directions uniform on the sphere, lengths from 1/8 to 8, the light
 // and the eye in the normal's hemisphere nine times in ten; parameters uniform in their ranges),
 // and "hard": grazing light and eye (n.l, n.e = 0, 1e-3 ... 1e-12), l = e, l = -e, huge
 // exponents (10^4), sigma = 1, k = 0, lengths from 1e-30 to 1e14, denormal components. Coordinates are
 // floats, so float mode reads the input exactly (except the denormal cases, beyond float).
-Json rand_params(std::string_view id, std::mt19937_64& rng, bool hard) {
-  auto u = [&](double lo, double hi) { return double(float(std::uniform_real_distribution<double>(lo, hi)(rng))); };
-  Json j = Json::object();
-  auto pick = [&](std::initializer_list<double> xs) { return *(xs.begin() + rng() % xs.size()); };
-  if (id == "minnaert") j["k"] = hard ? pick({0, 1, 0.001, 0.999}) : u(0, 1);
-  if (id == "oren-nayar") j["sigma"] = hard ? pick({0, 1, 0.999}) : u(0, 1);
-  if (id == "toon") {
-    const int d = int(rng() % 3);
-    j["diffuse"] = std::array{"lambert", "minnaert", "oren-nayar"}[d];
-    if (d == 1) j["k"] = u(0, 1);
-    if (d == 2) j["sigma"] = u(0, 1);
-    j["cutoff"] = u(0, 1);
-  }
-  if (id == "phong" || id == "blinn-phong") j["shininess"] = hard ? pick({10000, 1000, 0, 1}) : u(1, 200);
-  if (id == "gaussian" || id == "beckmann" || id == "cook-torrance") j["m"] = hard ? pick({0.001, 0.01, 1, 5}) : u(0.05, 1);
-  if (id == "cook-torrance") j["ior"] = hard ? pick({1, 1.0001, 50}) : u(1, 3), j["fresnel"] = rng() % 2 ? "exact" : "schlick";
-  return j;
-}
-
 std::vector<BenchSet<ModelInput>> model_bench_sets(std::string_view id) {
+  const lighting_io::ModelRow& row = lighting_io::model_row(id);
   std::mt19937_64 rng(4242 + id.size());
   std::normal_distribution<double> gauss;
   auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
@@ -334,7 +300,7 @@ std::vector<BenchSet<ModelInput>> model_bench_sets(std::string_view id) {
   for (int k = 0; k < 2000; ++k) {
     const Vec3<double> n = dir(std::exp2(u(-3, 3)));
     const Vec3<double> l = flip_into(dir(std::exp2(u(-3, 3))), n, rng() % 10 != 0), e = flip_into(dir(std::exp2(u(-3, 3))), n, rng() % 10 != 0);
-    random.inputs.push_back(make(rand_params(id, rng, false), n, l, e));
+    random.inputs.push_back(make(lighting_io::random_params(row, rng, false), n, l, e));
   }
   // Grazing: the light (or the eye) at angle eps above the tangent plane of n = z, eps = 0 exactly
   // some of the time; l = e; l = -e; scaled and denormal vectors.
@@ -356,7 +322,7 @@ std::vector<BenchSet<ModelInput>> model_bench_sets(std::string_view id) {
         break;
       }
     }
-    hard.inputs.push_back(make(rand_params(id, rng, true), n, l, e));
+    hard.inputs.push_back(make(lighting_io::random_params(row, rng, true), n, l, e));
   }
   return {random, hard};
 }
