@@ -28,6 +28,8 @@ template <class Num> struct Frame {
 
 enum class DiffuseModel : std::uint8_t { lambert, minnaert, oren_nayar };
 enum class SpecularModel : std::uint8_t { none, phong, blinn_phong, gaussian, beckmann, cook_torrance };
+// How many of each there are (the parsers walk them by name); the last enumerator plus one.
+inline constexpr int kDiffuseModels = int(DiffuseModel::oren_nayar) + 1, kSpecularModels = int(SpecularModel::cook_torrance) + 1;
 enum class Fresnel : std::uint8_t { exact, schlick, one };  // one: F = 1 (the limit test against beckmann)
 
 // Which model an entry runs: a diffuse one (toon: with p.toon set) or a specular one.

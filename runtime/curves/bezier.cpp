@@ -1,5 +1,5 @@
 // The curves family's cubic Bezier: bezier-forward-diff's and bezier-de-casteljau's catalog entries
-// (registered by specs.cpp).
+// (registered here).
 // Semantics: docs/curves/semantics.md.
 #include <bit>
 #include <random>

@@ -1,4 +1,4 @@
-// sutherland-hodgman in the catalog (registered by specs.cpp).
+// sutherland-hodgman in the catalog (registered here).
 // Semantics, bounds and the region comparison: docs/fill/clipping.md.
 #include <numbers>
 #include "fill/sutherland_hodgman.hpp"

@@ -1,4 +1,4 @@
-// cohen-sutherland in the catalog (registered by specs.cpp).
+// cohen-sutherland in the catalog (registered here).
 // Semantics, bounds and the region comparison: docs/fill/clipping.md.
 #include <numbers>
 #include "fill/cohen_sutherland.hpp"

@@ -1,5 +1,5 @@
 // The fill family's fills: triangle-dda, triangle-dda-no-offset, triangle-edge, scanline-polygon
-// (registered by specs.cpp). Semantics: docs/fill/semantics.md.
+// (registered here). Semantics: docs/fill/semantics.md.
 #include <random>
 #include "register.hpp"
 #include "fill/scanline_polygon.hpp"

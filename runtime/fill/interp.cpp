@@ -1,6 +1,6 @@
 // The fill family's attribute interpolation in perspective: perspective-interp (the guide's
 // hyperbolic interpolation) and affine-interp (linear on screen), both clipping at w = w_near
-// before any divide (registered by specs.cpp). Semantics: docs/fill/interpolation.md.
+// before any divide (registered here). Semantics: docs/fill/interpolation.md.
 #include <random>
 #include "register.hpp"
 #include "fill/perspective_interp.hpp"

@@ -1,4 +1,4 @@
-// raster-clip in the catalog (registered by specs.cpp): the double-DDA triangle fill clipped to a
+// raster-clip in the catalog (registered here): the double-DDA triangle fill clipped to a
 // screen at rasterization time. Semantics, bounds and figures: docs/fill/raster-clip.md.
 #include <random>
 #include "register.hpp"

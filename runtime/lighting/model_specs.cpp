@@ -18,6 +18,54 @@
 #include "lighting_oracle.hpp"
 
 namespace sw {
+
+// The table of reflection models (model_table.hpp): one row per parameter and per entry. A new
+// model adds its row below, its example and its SW_REGISTER line at the end of this file.
+namespace lighting_io {
+namespace {
+using lighting::DiffuseModel;
+using lighting::ModelChoice;
+using lighting::SpecularModel;
+using P = lighting::ModelParams<Rational>;
+
+const ModelParam kK{"k", 0, 1, false, 0, 1, false, "Minnaert's darkening exponent: 1 is Lambert, lower darkens the limb less",
+                    0, 1, {0, 1, 0.001, 0.999}, [](P& p, const Rational& x) { p.minnaert_k = x; }};
+const ModelParam kSigma{"sigma", 0, 1, false, 0, 1, false, "Oren-Nayar's slope spread in radians: 0 is Lambert",
+                        0, 1, {0, 1, 0.999}, [](P& p, const Rational& x) { p.sigma = x; }};
+const ModelParam kCutoff{"cutoff", 0, 1, false, 0, 1, false, "toon: the diffuse value at which the band switches",
+                         0, 1, {}, [](P& p, const Rational& x) { p.toon = x; }};
+const ModelParam kShininess{"shininess", 0, 1e6, false, 0, 10000, true, "the highlight exponent n",
+                            1, 200, {10000, 1000, 0, 1}, [](P& p, const Rational& x) { p.shininess = x; }};
+const ModelParam kM{"m", 0, 100, true, 0.001, 1, true, "the RMS slope of the microfacets: lower is glossier",
+                    0.05, 1, {0.001, 0.01, 1, 5}, [](P& p, const Rational& x) { p.m = x; }};
+const ModelParam kIor{"ior", 1, 100, false, 1, 3, false, "the index of refraction in the Fresnel term",
+                      1, 3, {1, 1.0001, 50}, [](P& p, const Rational& x) { p.ior = x; }};
+
+constexpr ModelChoice diffuse(DiffuseModel m) { return {.specular = false, .diffuse = m}; }
+constexpr ModelChoice specular(SpecularModel m) { return {.specular = true, .spec = m}; }
+
+}  // namespace
+
+const std::vector<ModelRow>& model_table() {
+  static const std::vector<ModelRow> rows = {
+      {"lambert", diffuse(DiffuseModel::lambert), {}, false, false, true, R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2]})"},
+      {"minnaert", diffuse(DiffuseModel::minnaert), {&kK}, false, false, false, R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2],"k":0.5})"},
+      {"oren-nayar", diffuse(DiffuseModel::oren_nayar), {&kSigma}, false, false, false, R"({"n":[0,0,1],"l":[1,0,1],"e":[1,1,2],"sigma":0.5})"},
+      {"toon", diffuse(DiffuseModel::lambert), {&kCutoff}, true, false, false,
+       R"({"n":[0,0,1],"l":[1,0,1],"e":[0,1,2],"diffuse":"lambert","cutoff":0.5})"},
+      {"phong", specular(SpecularModel::phong), {&kShininess}, false, false, true, R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"shininess":20})"},
+      {"blinn-phong", specular(SpecularModel::blinn_phong), {&kShininess}, false, false, true,
+       R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"shininess":20})"},
+      {"gaussian", specular(SpecularModel::gaussian), {&kM}, false, false, true, R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})"},
+      {"beckmann", specular(SpecularModel::beckmann), {&kM}, false, false, false, R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})"},
+      {"cook-torrance", specular(SpecularModel::cook_torrance), {&kM, &kIor}, false, true, false,
+       R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3,"ior":1.5,"fresnel":"exact"})"},
+  };
+  return rows;
+}
+
+}  // namespace lighting_io
+
 namespace {
 
 using lighting_io::ModelInput;

@@ -135,8 +135,8 @@ void parse_scene_rest(const Json& j, const std::string& what, ShadeScene<Rationa
   const bool model_keys = m.contains("diffuse_model") || m.contains("specular_model") || m.contains("minnaert_k") || m.contains("sigma") ||
                           m.contains("m") || m.contains("ior") || m.contains("fresnel") || m.contains("toon");
   if (model_keys && s.convention == Convention::gl) throw InputError(mw + ": model fields need \"convention\": \"models\"");
-  if (m.contains("diffuse_model")) mat.diffuse = model_by_name<DiffuseModel>(m["diffuse_model"], mw + ".diffuse_model", 3);
-  if (m.contains("specular_model")) mat.specular = model_by_name<SpecularModel>(m["specular_model"], mw + ".specular_model", 6);
+  if (m.contains("diffuse_model")) mat.diffuse = model_by_name<DiffuseModel>(m["diffuse_model"], mw + ".diffuse_model", kDiffuseModels);
+  if (m.contains("specular_model")) mat.specular = model_by_name<SpecularModel>(m["specular_model"], mw + ".specular_model", kSpecularModels);
   if (m.contains("minnaert_k")) q.minnaert_k = in_range(m["minnaert_k"], mw + ".minnaert_k", 1);
   if (m.contains("sigma")) q.sigma = in_range(m["sigma"], mw + ".sigma", 1);
   if (m.contains("m")) {

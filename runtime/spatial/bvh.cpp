@@ -1,5 +1,5 @@
 // The BVH in the catalog: bvh-build (binned SAH) and bvh-traverse (closest hit, or any hit for
-// shadow rays), registered by specs.cpp. Semantics, bounds and ties: docs/spatial/bvh.md.
+// shadow rays), registered here. Semantics, bounds and ties: docs/spatial/bvh.md.
 #include <cmath>
 #include <memory>
 #include <optional>

@@ -1,4 +1,4 @@
-// The 3D grid walk in the catalog: grid-traverse-3d (registered by specs.cpp).
+// The 3D grid walk in the catalog: grid-traverse-3d (registered here).
 // Semantics, bounds and ties: docs/spatial/grid.md.
 #include <algorithm>
 #include <random>

@@ -1,5 +1,5 @@
 // The point trees in the catalog: quadtree-build (2D points) and octree-build (3D points or
-// triangles), registered by specs.cpp. Semantics, bounds and budgets: docs/spatial/point-trees.md.
+// triangles), registered here. Semantics, bounds and budgets: docs/spatial/point-trees.md.
 #include <random>
 #include "register.hpp"
 #include "spatial/octree_build.hpp"

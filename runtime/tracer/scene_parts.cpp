@@ -150,9 +150,9 @@ Material parse_material(const Json& j, const std::string& what, const std::vecto
                              "m", "toon", "fresnel", "ior", "kr", "kt", "texture", "bump"}, what);
   Material m;
   auto& s = m.shading;
-  s.diffuse = j.contains("diffuse_model") ? model_by_name<lighting::DiffuseModel>(j["diffuse_model"], at(what, "diffuse_model"), 3)
+  s.diffuse = j.contains("diffuse_model") ? model_by_name<lighting::DiffuseModel>(j["diffuse_model"], at(what, "diffuse_model"), lighting::kDiffuseModels)
                                           : lighting::DiffuseModel::lambert;
-  s.specular = j.contains("specular_model") ? model_by_name<lighting::SpecularModel>(j["specular_model"], at(what, "specular_model"), 6)
+  s.specular = j.contains("specular_model") ? model_by_name<lighting::SpecularModel>(j["specular_model"], at(what, "specular_model"), lighting::kSpecularModels)
                                             : lighting::SpecularModel::none;
   s.emission = colour_or(j, "emission", what, grey(0)).q;
   s.ka = colour_or(j, "ambient", what, grey(Rational(1, 5))).q;
