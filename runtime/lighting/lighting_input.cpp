@@ -143,24 +143,23 @@ Json to_json(const ModelInput& in) {
   auto v = [](const Vec3<Rational>& x) { return Json::array({x.x.get_str(), x.y.get_str(), x.z.get_str()}); };
   Json j = {{"n", v(in.n)}, {"l", v(in.l)}, {"e", v(in.e)}};
   const auto& p = in.p;
-  if (in.choice.specular) {
-    switch (in.choice.spec) {
-      case SpecularModel::phong:
-      case SpecularModel::blinn_phong: j["shininess"] = p.shininess.get_str(); break;
-      case SpecularModel::cook_torrance:
-        j["ior"] = p.ior.get_str();
-        j["fresnel"] = p.fresnel == Fresnel::exact ? "exact" : p.fresnel == Fresnel::schlick ? "schlick" : "one";
-        if (!p.shadowing) j["shadowing"] = false;
-        [[fallthrough]];
-      case SpecularModel::gaussian:
-      case SpecularModel::beckmann: j["m"] = p.m.get_str(); break;
-      case SpecularModel::none: break;
-    }
-    return j;
+  // The row of the entry: toon when a cut is set, else the chosen term's own row.
+  const ModelRow* row = nullptr;
+  for (const ModelRow& r : model_table())
+    if (r.toon == p.toon.has_value() && (r.toon || (r.choice.specular == in.choice.specular && (in.choice.specular ? r.choice.spec == in.choice.spec : r.choice.diffuse == in.choice.diffuse))))
+      row = &r;
+  if (!row) throw std::logic_error("to_json: no model row");
+  std::vector<const ModelParam*> params = row->params;
+  if (row->toon) {
+    j["diffuse"] = std::string(model_name(in.choice.diffuse));
+    for (const ModelRow& r : model_table())
+      if (!r.choice.specular && !r.toon && r.choice.diffuse == in.choice.diffuse) params.insert(params.end(), r.params.begin(), r.params.end());
   }
-  if (p.toon) j["diffuse"] = std::string(model_name(in.choice.diffuse)), j["cutoff"] = p.toon->get_str();
-  if (in.choice.diffuse == DiffuseModel::minnaert) j["k"] = p.minnaert_k.get_str();
-  if (in.choice.diffuse == DiffuseModel::oren_nayar) j["sigma"] = p.sigma.get_str();
+  for (const ModelParam* q : params) j[std::string(q->key)] = q->get(p).get_str();
+  if (row->fresnel) {
+    j["fresnel"] = p.fresnel == Fresnel::exact ? "exact" : p.fresnel == Fresnel::schlick ? "schlick" : "one";
+    if (!p.shadowing) j["shadowing"] = false;
+  }
   return j;
 }
 

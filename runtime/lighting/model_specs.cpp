@@ -29,17 +29,23 @@ using lighting::SpecularModel;
 using P = lighting::ModelParams<Rational>;
 
 const ModelParam kK{"k", 0, 1, false, 0, 1, false, "Minnaert's darkening exponent: 1 is Lambert, lower darkens the limb less",
-                    0, 1, {0, 1, 0.001, 0.999}, [](P& p, const Rational& x) { p.minnaert_k = x; }};
+                    0, 1, {0, 1, 0.001, 0.999}, [](P& p, const Rational& x) { p.minnaert_k = x; },
+                    [](const P& p) { return p.minnaert_k; }};
 const ModelParam kSigma{"sigma", 0, 1, false, 0, 1, false, "Oren-Nayar's slope spread in radians: 0 is Lambert",
-                        0, 1, {0, 1, 0.999}, [](P& p, const Rational& x) { p.sigma = x; }};
+                        0, 1, {0, 1, 0.999}, [](P& p, const Rational& x) { p.sigma = x; },
+                    [](const P& p) { return p.sigma; }};
 const ModelParam kCutoff{"cutoff", 0, 1, false, 0, 1, false, "toon: the diffuse value at which the band switches",
-                         0, 1, {}, [](P& p, const Rational& x) { p.toon = x; }};
+                         0, 1, {}, [](P& p, const Rational& x) { p.toon = x; },
+                         [](const P& p) { return p.toon.value_or(Rational(0)); }};
 const ModelParam kShininess{"shininess", 0, 1e6, false, 0, 10000, true, "the highlight exponent n",
-                            1, 200, {10000, 1000, 0, 1}, [](P& p, const Rational& x) { p.shininess = x; }};
+                            1, 200, {10000, 1000, 0, 1}, [](P& p, const Rational& x) { p.shininess = x; },
+                    [](const P& p) { return p.shininess; }};
 const ModelParam kM{"m", 0, 100, true, 0.001, 1, true, "the RMS slope of the microfacets: lower is glossier",
-                    0.05, 1, {0.001, 0.01, 1, 5}, [](P& p, const Rational& x) { p.m = x; }};
+                    0.05, 1, {0.001, 0.01, 1, 5}, [](P& p, const Rational& x) { p.m = x; },
+                    [](const P& p) { return p.m; }};
 const ModelParam kIor{"ior", 1, 100, false, 1, 3, false, "the index of refraction in the Fresnel term",
-                      1, 3, {1, 1.0001, 50}, [](P& p, const Rational& x) { p.ior = x; }};
+                      1, 3, {1, 1.0001, 50}, [](P& p, const Rational& x) { p.ior = x; },
+                    [](const P& p) { return p.ior; }};
 
 constexpr ModelChoice diffuse(DiffuseModel m) { return {.specular = false, .diffuse = m}; }
 constexpr ModelChoice specular(SpecularModel m) { return {.specular = true, .spec = m}; }

@@ -15,7 +15,8 @@ namespace sw::lighting_io {
 
 // One numeric parameter: the input key, the range an input may take ([lo, hi], lo excluded when
 // lo_open), the slider (range, scale, text), the bench sets' generators (uniform in [rand_lo,
-// rand_hi], rounded to float; the "hard" set picks from `hard`, or is uniform when it is empty).
+// rand_hi], rounded to float; the "hard" set picks from `hard`, or is uniform when it is empty), and
+// where it lives in ModelParams (set, get).
 struct ModelParam {
   std::string_view key;
   double lo, hi;
@@ -26,6 +27,7 @@ struct ModelParam {
   double rand_lo, rand_hi;
   std::vector<double> hard;
   void (*set)(lighting::ModelParams<Rational>&, const Rational&);
+  Rational (*get)(const lighting::ModelParams<Rational>&);
 };
 
 // One model entry. `toon`: the entry also takes "diffuse" (a diffuse row's id, with that row's
