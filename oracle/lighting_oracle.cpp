@@ -168,6 +168,15 @@ OracleTerm term(const lighting::ModelChoice& c, const Vec3<Rational>& N, const V
     }
     value = pi_b() * D * F * G / (Big(4) * cr);
     b.put("s", value);
+  } else if (c.spec == SpecularModel::ward) {
+    // Ward 1992, isotropic: f = exp(-tan^2(delta)/a^2) / (4 pi a^2 sqrt(cos(ti) cos(tr))), delta the
+    // half vector's angle from n; the term is pi f cos(ti).
+    half();
+    const Big t = tan_b(alpha_h), a2 = Big(p.m) * Big(p.m);
+    const Big g = exp_b(-(t * t) / a2);
+    b.put("t2", t * t), b.put("g", g);
+    value = pi_b() * (g / (Big(4) * pi_b() * a2 * sqrt_b(ci * cr))) * ci;
+    b.put("s", value);
   } else {
     throw std::invalid_argument("lighting oracle: unknown model");
   }

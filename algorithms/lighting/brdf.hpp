@@ -27,9 +27,9 @@ template <class Num> struct Frame {
 };
 
 enum class DiffuseModel : std::uint8_t { lambert, minnaert, oren_nayar };
-enum class SpecularModel : std::uint8_t { none, phong, blinn_phong, gaussian, beckmann, cook_torrance };
+enum class SpecularModel : std::uint8_t { none, phong, blinn_phong, gaussian, beckmann, cook_torrance, ward };
 // How many of each there are (the parsers walk them by name); the last enumerator plus one.
-inline constexpr int kDiffuseModels = int(DiffuseModel::oren_nayar) + 1, kSpecularModels = int(SpecularModel::cook_torrance) + 1;
+inline constexpr int kDiffuseModels = int(DiffuseModel::oren_nayar) + 1, kSpecularModels = int(SpecularModel::ward) + 1;
 enum class Fresnel : std::uint8_t { exact, schlick, one };  // one: F = 1 (the limit test against beckmann)
 
 // Which model an entry runs: a diffuse one (toon: with p.toon set) or a specular one.
@@ -46,7 +46,7 @@ template <class Num> struct ModelParams {
   std::optional<Num> toon;  // toon: a cutoff on the diffuse term (any model), if set
   std::optional<bool> toon_above;  // toon: the decision d >= cutoff made exactly beforehand (else on the value)
   Num shininess{1};         // phong, blinn-phong: n >= 0
-  Num m{Num(0.3)};          // gaussian, beckmann, cook-torrance: the slope roughness m > 0
+  Num m{Num(0.3)};          // gaussian, beckmann, cook-torrance, ward: the slope roughness m > 0
   Num ior{Num(1.5)};        // cook-torrance: the relative index of refraction, >= 1 (no total internal reflection)
   Fresnel fresnel = Fresnel::exact;
   bool shadowing = true;    // cook-torrance: the geometric attenuation G (false: G = 1, the limit test)

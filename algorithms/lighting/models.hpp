@@ -9,6 +9,7 @@
 #include "lighting/gaussian.hpp"
 #include "lighting/phong.hpp"
 #include "lighting/toon.hpp"
+#include "lighting/ward.hpp"
 
 namespace sw::lighting {
 
@@ -28,6 +29,7 @@ template <NumberType Num, StepProbe Probe> Num specular_plain(SpecularModel m, c
     case SpecularModel::gaussian: return gaussian_term(f, p, probe);
     case SpecularModel::beckmann: return beckmann_term(f, p, probe);
     case SpecularModel::cook_torrance: return cook_torrance_term(f, p, probe);
+    case SpecularModel::ward: return ward_term(f, p, probe);
   }
   return Num(0);
 }
@@ -44,6 +46,7 @@ template <NumberType Num, StepProbe Probe> Num specular_term(SpecularModel m, co
     case SpecularModel::gaussian: return run(std::type_identity<Gaussian>{});
     case SpecularModel::beckmann: return run(std::type_identity<Beckmann>{});
     case SpecularModel::cook_torrance: return run(std::type_identity<CookTorrance>{});
+    case SpecularModel::ward: return run(std::type_identity<Ward>{});
     case SpecularModel::none: break;
   }
   return Num(0);
@@ -65,6 +68,7 @@ inline std::string_view model_name(SpecularModel m) {
     case SpecularModel::gaussian: return Gaussian::id;
     case SpecularModel::beckmann: return Beckmann::id;
     case SpecularModel::cook_torrance: return CookTorrance::id;
+    case SpecularModel::ward: return Ward::id;
   }
   return "?";
 }

@@ -66,6 +66,7 @@ const std::vector<ModelRow>& model_table() {
       {"beckmann", specular(SpecularModel::beckmann), {&kM}, false, false, false, R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})"},
       {"cook-torrance", specular(SpecularModel::cook_torrance), {&kM, &kIor}, false, true, false,
        R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3,"ior":1.5,"fresnel":"exact"})"},
+      {"ward", specular(SpecularModel::ward), {&kM}, false, false, false, R"({"n":[0,0,1],"l":[1,0,1],"e":[-1,0.25,2],"m":0.3})"},
   };
   return rows;
 }
@@ -323,6 +324,7 @@ template <> const std::string ModelSpec<BlinnPhong>::example{lighting_io::model_
 template <> const std::string ModelSpec<Gaussian>::example{lighting_io::model_row(Gaussian::id).example};
 template <> const std::string ModelSpec<Beckmann>::example{lighting_io::model_row(Beckmann::id).example};
 template <> const std::string ModelSpec<CookTorrance>::example{lighting_io::model_row(CookTorrance::id).example};
+template <> const std::string ModelSpec<Ward>::example{lighting_io::model_row(Ward::id).example};
 
 // Seeded sets: "random" frames (directions uniform on the sphere, lengths from 1/8 to 8, the light
 // and the eye in the normal's hemisphere nine times in ten; parameters uniform in their ranges),
@@ -392,6 +394,7 @@ SW_REGISTER(ModelSpec<BlinnPhong>);
 SW_REGISTER(ModelSpec<Gaussian>);
 SW_REGISTER(ModelSpec<Beckmann>);
 SW_REGISTER(ModelSpec<CookTorrance>);
+SW_REGISTER(ModelSpec<Ward>);
 
 }  // namespace
 
