@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include "trace_io.hpp"
@@ -35,6 +36,7 @@ struct Digits {
 };
 std::optional<Digits> approx_part(std::string_view s) {
   if (s.empty() || s.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+  s.remove_prefix(std::min(s.find_first_not_of('0'), s.size() - 1));  // leading zeros would hide the leading digits
   constexpr std::size_t kLead = 18;
   const std::size_t n = std::min(s.size(), kLead);
   return Digits{std::strtold(std::string(s.substr(0, n)).c_str(), nullptr), static_cast<std::ptrdiff_t>(s.size() - n)};
@@ -59,8 +61,9 @@ std::optional<Approx> approx(const Json& v) {
   if (!p || !q || q->lead == 0) return std::nullopt;
   const std::ptrdiff_t e = p->exp - q->exp;
   if (e > 400 || e < -400) return std::nullopt;
-  const double d = static_cast<double>(p->lead / q->lead * std::pow(10.0L, static_cast<long double>(e)));
-  if (!std::isfinite(d)) return std::nullopt;
+  const long double x = p->lead / q->lead * std::pow(10.0L, static_cast<long double>(e));
+  if (!(std::fabs(x) <= static_cast<long double>(std::numeric_limits<double>::max()))) return std::nullopt;  // a cast beyond double is undefined
+  const double d = static_cast<double>(x);
   // Each part within 10^-17 of its value (18 digits kept), the long double steps within 2^-62, one
   // rounding to double: together below 2^-51.
   return Approx{negative ? -d : d, 0x1p-51};

@@ -50,18 +50,6 @@ inline constexpr float kMinScale = 0.75f, kMaxScale = 3.f;
 // `scale` multiplies font sizes and spacing (1 at 1280x800); it must be in [kMinScale, kMaxScale].
 Fonts setup_style(float scale = 1.f);
 
-// A sweep view's status plate at `at`: three lines on a dark plate, the first red when `bad` (the
-// mode disagrees, or the sweep failed) and green otherwise, the others grey.
-inline void status_plate(ImDrawList* dl, ImVec2 at, const char (&lines)[3][200], bool bad) {
-  const float line_h = ImGui::GetTextLineHeight();
-  float text_w = 0;
-  for (const auto& l : lines) text_w = std::max(text_w, ImGui::CalcTextSize(l).x);
-  dl->AddRectFilled(at, ImVec2(at.x + text_w + 10, at.y + 3 * line_h + 8), IM_COL32(0, 0, 0, 190), 3);
-  for (int k = 0; k < 3; ++k) {
-    const ImU32 col = k ? theme::kLabel : bad ? IM_COL32(255, 130, 120, 255) : IM_COL32(130, 220, 150, 255);
-    dl->AddText(ImVec2(at.x + 5, at.y + 3 + float(k) * line_h), col, lines[k]);
-  }
-}
 }  // namespace sw::vis::theme
 
 namespace sw::vis {
