@@ -209,10 +209,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
       if (!plan_.shadows[i] || to_light == Vec3<Num>{} || lighting::sign_dot(ns, to_light) <= 0) continue;
       const auto [sr, t_max] = shadow_ray(li, origin(sf, to_light));
       ++counts_.shadow;
-      const bool hit = [&] {
+      bool hit = false;
+      {
         const auto call = nested<SceneHit>(probe_);
-        return scene_hit(s_, sr, true, t_max, here, probe_).hit;
-      }();
+        hit = scene_hit(s_, sr, true, t_max, here, probe_).hit;
+      }
       if constexpr (Probe::on) {
         auto& st = probe_.step(L::shadow, hit ? StepKind::hit : StepKind::miss).idx("i", std::int64_t(i)).idx("blocked", hit);
         if (positional) st.segment(sr.o, Vec3<Num>(sr.o + sr.d)).label(hit ? "blocked" : "lit").keep();  // to the light
