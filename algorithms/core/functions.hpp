@@ -39,8 +39,7 @@ inline Rational round_bits(const Rational& x, int bits) {
 inline Rooted<float> root(float x) { return {std::sqrt(x), false}; }
 inline Rooted<double> root(double x) { return {std::sqrt(x), false}; }
 template <class Num>
-  requires is_filtered<Num>
-Rooted<Num> root(const Num& x) {
+requires is_filtered<Num> Rooted<Num> root(const Num& x) {
   return {sqrt(x), false};  // the type's own certified root (found by ADL)
 }
 inline Rooted<Rational> root(const Rational& x) {

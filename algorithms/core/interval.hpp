@@ -23,7 +23,12 @@ class Interval {
   Interval(std::int64_t x) : lo_(static_cast<double>(x)), hi_(static_cast<double>(x)) {
     if (static_cast<std::int64_t>(lo_) != x) widen();
   }
-  static Interval hull(double lo, double hi) { Interval r; r.lo_ = lo; r.hi_ = hi; return r; }
+  static Interval hull(double lo, double hi) {
+    Interval r;
+    r.lo_ = lo;
+    r.hi_ = hi;
+    return r;
+  }
 
   double lo() const { return lo_; }
   double hi() const { return hi_; }
@@ -41,12 +46,14 @@ class Interval {
   }
   friend Interval operator*(const Interval& a, const Interval& b) {
     double p1 = a.lo_ * b.lo_, p2 = a.lo_ * b.hi_, p3 = a.hi_ * b.lo_, p4 = a.hi_ * b.hi_;
-    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), a.is_point() && b.is_point() && exact_product(a.lo_, b.lo_, p1, p1));
+    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}),
+                   a.is_point() && b.is_point() && exact_product(a.lo_, b.lo_, p1, p1));
   }
   friend Interval operator/(const Interval& a, const Interval& b) {
     if (b.lo_ <= 0 && b.hi_ >= 0) throw Uncertain{};  // the divisor's sign is not known
     double p1 = a.lo_ / b.lo_, p2 = a.lo_ / b.hi_, p3 = a.hi_ / b.lo_, p4 = a.hi_ / b.hi_;
-    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}), a.is_point() && b.is_point() && exact_product(p1, b.lo_, a.lo_, a.lo_));
+    return outward(std::min({p1, p2, p3, p4}), std::max({p1, p2, p3, p4}),
+                   a.is_point() && b.is_point() && exact_product(p1, b.lo_, a.lo_, a.lo_));
   }
   // Needs exact(x) >= 0 (the caller decided it); a lower end below 0 is rounding and clamps to 0.
   friend Interval sqrt(const Interval& x) {

@@ -27,8 +27,7 @@ template <class Num> class JsonlProbe : public GeometryEmitters<JsonlProbe<Num>,
     if (std::uncaught_exceptions() > 0) return;
     try {
       finish();
-    } catch (...) {
-    }
+    } catch (...) {}
   }
 
   JsonlProbe& step(std::uint32_t line, StepKind kind) {
@@ -47,12 +46,18 @@ template <class Num> class JsonlProbe : public GeometryEmitters<JsonlProbe<Num>,
   }
   JsonlProbe& num(const char* name, const Num& v) { return add_var(name, json_value(v)); }
   JsonlProbe& idx(const char* name, std::int64_t v) { return add_var(name, std::to_string(v)); }
-  JsonlProbe& vec(const char* name, const Vec2<Num>& v) { return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ']'); }
-  JsonlProbe& vec(const char* name, const Vec3<Num>& v) { return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ',' + json_value(v.z) + ']'); }
+  JsonlProbe& vec(const char* name, const Vec2<Num>& v) {
+    return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ']');
+  }
+  JsonlProbe& vec(const char* name, const Vec3<Num>& v) {
+    return add_var(name, '[' + json_value(v.x) + ',' + json_value(v.y) + ',' + json_value(v.z) + ']');
+  }
   JsonlProbe& colour(const char* name, const Vec3<Num>& c) {
     return add_var(name, "{\"rgb\":[" + json_value(c.x) + ',' + json_value(c.y) + ',' + json_value(c.z) + "]}");
   }
-  JsonlProbe& list(const char* name, std::span<const Num> xs) { return add_var(name, json_list(xs, [](const Num& x) { return json_value(x); })); }
+  JsonlProbe& list(const char* name, std::span<const Num> xs) {
+    return add_var(name, json_list(xs, [](const Num& x) { return json_value(x); }));
+  }
   JsonlProbe& ilist(const char* name, std::span<const std::int64_t> xs) {
     return add_var(name, json_list(xs, [](std::int64_t x) { return std::to_string(x); }));
   }

@@ -113,8 +113,12 @@ template <bool Checked> class BasicMag {
   double threshold() const { return kC * p_[1] - 0x1p-1074; }
 
   [[gnu::always_inline]] friend BasicMag operator-(const BasicMag& a) { return make(flip_value(a.p_), a.index()); }
-  [[gnu::always_inline]] friend BasicMag operator+(const BasicMag& a, const BasicMag& b) { return make(a.p_ + b.p_, sum_index(a, b)); }
-  [[gnu::always_inline]] friend BasicMag operator-(const BasicMag& a, const BasicMag& b) { return make(a.p_ + flip_value(b.p_), sum_index(a, b)); }
+  [[gnu::always_inline]] friend BasicMag operator+(const BasicMag& a, const BasicMag& b) {
+    return make(a.p_ + b.p_, sum_index(a, b));
+  }
+  [[gnu::always_inline]] friend BasicMag operator-(const BasicMag& a, const BasicMag& b) {
+    return make(a.p_ + flip_value(b.p_), sum_index(a, b));
+  }
   [[gnu::always_inline]] friend BasicMag operator*(const BasicMag& a, const BasicMag& b) {
     return product(a.p_ * b.p_, a.index() + b.index() + 1);
   }
@@ -124,7 +128,8 @@ template <bool Checked> class BasicMag {
     const double vb = b.p_[0], mb = b.p_[1];
     // An unguarded divisor raises the flag, like an undecided comparison (the case is re-run on
     // the next stage). One packed division for both lanes: the divider is the bottleneck.
-    if (!(std::fabs(vb) > 2 * kC * mb)) [[unlikely]] raise_uncertain();
+    if (!(std::fabs(vb) > 2 * kC * mb)) [[unlikely]]
+      raise_uncertain();
     return product(a.p_ * Pair{1, 2 * mb} / Pair{vb, vb * vb}, a.index() + b.index() + 4);
   }
   BasicMag& operator+=(const BasicMag& b) { return *this = *this + b; }
@@ -139,9 +144,11 @@ template <bool Checked> class BasicMag {
   // keeps a NaN m, as max returns its second operand then).
   [[gnu::always_inline]] friend BasicMag sqrt(const BasicMag& x) {
     if constexpr (Checked)
-      if (x.index() > kIndexBudget) throw std::logic_error("Mag: a square root's radicand of index " + std::to_string(x.index()) + " exceeds the budget");
+      if (x.index() > kIndexBudget)
+        throw std::logic_error("Mag: a square root's radicand of index " + std::to_string(x.index()) + " exceeds the budget");
 #if SW_MAG_SSE2
-    const Pair r = reinterpret_cast<Pair>(_mm_sqrt_pd(_mm_max_pd(__m128d{0, 0}, reinterpret_cast<__m128d>(x.p_ * Pair{1, kC * 0x1p106}))));
+    const Pair r =
+        reinterpret_cast<Pair>(_mm_sqrt_pd(_mm_max_pd(__m128d{0, 0}, reinterpret_cast<__m128d>(x.p_ * Pair{1, kC * 0x1p106}))));
 #else
     const Pair r{std::sqrt(mag_detail::max0(x.p_.v)), std::sqrt(mag_detail::max0(x.p_.m * (kC * 0x1p106)))};
 #endif
@@ -155,10 +162,12 @@ template <bool Checked> class BasicMag {
     using Bits = mag_detail::PairBits;
     const std::int64_t bit = -std::int64_t(c);
     const Bits mask{bit, bit};
-    return make(reinterpret_cast<Pair>((reinterpret_cast<Bits>(a.p_) & mask) | (reinterpret_cast<Bits>(b.p_) & ~mask)), c ? a.index() : b.index());
+    return make(reinterpret_cast<Pair>((reinterpret_cast<Bits>(a.p_) & mask) | (reinterpret_cast<Bits>(b.p_) & ~mask)),
+                c ? a.index() : b.index());
 #else
     const std::uint64_t mask = -std::uint64_t(c);
-    return make(Pair{mag_detail::blend(mask, a.p_.v, b.p_.v), mag_detail::blend(mask, a.p_.m, b.p_.m)}, c ? a.index() : b.index());
+    return make(Pair{mag_detail::blend(mask, a.p_.v, b.p_.v), mag_detail::blend(mask, a.p_.m, b.p_.m)},
+                c ? a.index() : b.index());
 #endif
   }
 
@@ -193,7 +202,9 @@ template <bool Checked> class BasicMag {
     return {-p.v, p.m};  // negation flips the sign bit only, as the xor does
 #endif
   }
-  [[gnu::always_inline]] static int sum_index(const BasicMag& a, const BasicMag& b) { return (a.index() > b.index() ? a.index() : b.index()) + 1; }
+  [[gnu::always_inline]] static int sum_index(const BasicMag& a, const BasicMag& b) {
+    return (a.index() > b.index() ? a.index() : b.index()) + 1;
+  }
   [[gnu::always_inline]] static BasicMag make(Pair p, int k) {
     BasicMag r;
     r.p_ = p;
@@ -203,7 +214,8 @@ template <bool Checked> class BasicMag {
   // A product or quotient: Checked verifies that it kept clear of underflow.
   [[gnu::always_inline]] static BasicMag product(Pair p, int k) {
     if constexpr (Checked)
-      if (p[1] != 0 && p[1] < kMinProduct) throw std::logic_error("Mag: a product's magnitude " + std::to_string(p[1]) + " is near underflow");
+      if (p[1] != 0 && p[1] < kMinProduct)
+        throw std::logic_error("Mag: a product's magnitude " + std::to_string(p[1]) + " is near underflow");
     return make(p, k);
   }
   // d's value, whose sign is the exact sign unless the flag was raised here. m = 0 means every
@@ -211,9 +223,11 @@ template <bool Checked> class BasicMag {
   // read-modify-write per comparison would chain every decision through memory.
   [[gnu::always_inline]] static double certain(const BasicMag& d) {
     if constexpr (Checked)
-      if (d.index() > kIndexBudget) throw std::logic_error("Mag: a decision of index " + std::to_string(d.index()) + " exceeds the budget");
+      if (d.index() > kIndexBudget)
+        throw std::logic_error("Mag: a decision of index " + std::to_string(d.index()) + " exceeds the budget");
     const double v = d.p_[0];
-    if (!(std::fabs(v) > d.threshold())) [[unlikely]] raise_uncertain();
+    if (!(std::fabs(v) > d.threshold())) [[unlikely]]
+      raise_uncertain();
     return v;
   }
   static inline thread_local bool uncertain_ = false;
@@ -241,7 +255,9 @@ template <bool C> inline bool certified(const BasicMag<C>& x, double rel) {
 }
 // One decision instead of the generic two comparisons.
 template <bool C> [[gnu::always_inline]] inline int sign(const BasicMag<C>& x) { return BasicMag<C>::sign_of(x); }
-template <bool C> [[gnu::always_inline]] inline BasicMag<C> select(bool c, const BasicMag<C>& a, const BasicMag<C>& b) { return BasicMag<C>::blend(c, a, b); }
+template <bool C> [[gnu::always_inline]] inline BasicMag<C> select(bool c, const BasicMag<C>& a, const BasicMag<C>& b) {
+  return BasicMag<C>::blend(c, a, b);
+}
 // Filtered traces record the double value; the decisions made from the bound are certified.
 template <bool C> inline std::string to_text(const BasicMag<C>& x) { return to_text(x.value()); }
 // An input that is not a double has no exact double to filter: the exact re-run decides (this

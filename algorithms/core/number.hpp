@@ -31,7 +31,8 @@ constexpr std::string_view numeric_name(Numeric n) {
   return "?";
 }
 
-inline constexpr std::array kNumerics{Numeric::f32, Numeric::f64, Numeric::integer, Numeric::filtered, Numeric::exact, Numeric::reference};
+inline constexpr std::array kNumerics{Numeric::f32,      Numeric::f64,   Numeric::integer,
+                                      Numeric::filtered, Numeric::exact, Numeric::reference};
 
 inline std::optional<Numeric> parse_numeric(std::string_view s) {
   for (Numeric n : kNumerics)
@@ -58,32 +59,48 @@ class Rational : public mpq_class {
     return *this;
   }
 
-#define SW_RATIONAL_OP(op, fn)                                                                          \
-  friend Rational operator op(const Rational& a, const Rational& b) {                                  \
-    Rational r;                                                                                         \
-    fn(r.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
-    return r;                                                                                           \
-  }                                                                                                     \
-  friend Rational operator op(Rational&& a, const Rational& b) {                                       \
-    fn(a.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
-    return std::move(a);                                                                                \
-  }                                                                                                     \
-  friend Rational operator op(const Rational& a, Rational&& b) {                                       \
-    fn(b.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
-    return std::move(b);                                                                                \
-  }                                                                                                     \
-  friend Rational operator op(Rational&& a, Rational&& b) {                                            \
-    fn(a.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t());                                                    \
-    return std::move(a);                                                                                \
-  }                                                                                                     \
-  template <class I> requires std::is_integral_v<I> friend Rational operator op(const Rational& a, I b) { return a op Rational(b); } \
-  template <class I> requires std::is_integral_v<I> friend Rational operator op(Rational&& a, I b) { return std::move(a) op Rational(b); } \
-  template <class I> requires std::is_integral_v<I> friend Rational operator op(I a, const Rational& b) { return Rational(a) op b; } \
-  template <class I> requires std::is_integral_v<I> friend Rational operator op(I a, Rational&& b) { return Rational(a) op std::move(b); } \
-  template <class T, class U> friend Rational operator op(const Rational& a, const __gmp_expr<T, U>& b) { return a op Rational(b); } \
-  template <class T, class U> friend Rational operator op(const __gmp_expr<T, U>& a, const Rational& b) { return Rational(a) op b; } \
-  template <class T, class U> friend Rational operator op(Rational&& a, const __gmp_expr<T, U>& b) { return std::move(a) op Rational(b); } \
-  template <class T, class U> friend Rational operator op(const __gmp_expr<T, U>& a, Rational&& b) { return Rational(a) op std::move(b); }
+#define SW_RATIONAL_OP(op, fn) \
+  friend Rational operator op(const Rational& a, const Rational& b) { \
+    Rational r; \
+    fn(r.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t()); \
+    return r; \
+  } \
+  friend Rational operator op(Rational&& a, const Rational& b) { \
+    fn(a.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t()); \
+    return std::move(a); \
+  } \
+  friend Rational operator op(const Rational& a, Rational&& b) { \
+    fn(b.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t()); \
+    return std::move(b); \
+  } \
+  friend Rational operator op(Rational&& a, Rational&& b) { \
+    fn(a.get_mpq_t(), a.get_mpq_t(), b.get_mpq_t()); \
+    return std::move(a); \
+  } \
+  template <class I> \
+  requires std::is_integral_v<I> \
+  friend Rational operator op(const Rational& a, I b) { return a op Rational(b); } \
+  template <class I> \
+  requires std::is_integral_v<I> \
+  friend Rational operator op(Rational&& a, I b) { return std::move(a) op Rational(b); } \
+  template <class I> \
+  requires std::is_integral_v<I> \
+  friend Rational operator op(I a, const Rational& b) { return Rational(a) op b; } \
+  template <class I> \
+  requires std::is_integral_v<I> \
+  friend Rational operator op(I a, Rational&& b) { return Rational(a) op std::move(b); } \
+  template <class T, class U> friend Rational operator op(const Rational& a, const __gmp_expr<T, U>& b) { \
+    return a op Rational(b); \
+  } \
+  template <class T, class U> friend Rational operator op(const __gmp_expr<T, U>& a, const Rational& b) { \
+    return Rational(a) op b; \
+  } \
+  template <class T, class U> friend Rational operator op(Rational&& a, const __gmp_expr<T, U>& b) { \
+    return std::move(a) op Rational(b); \
+  } \
+  template <class T, class U> friend Rational operator op(const __gmp_expr<T, U>& a, Rational&& b) { \
+    return Rational(a) op std::move(b); \
+  }
   SW_RATIONAL_OP(+, mpq_add)
   SW_RATIONAL_OP(-, mpq_sub)
   SW_RATIONAL_OP(*, mpq_mul)
@@ -189,8 +206,8 @@ template <class T> std::string json_value(const T& x) {
   if constexpr (std::is_same_v<T, Rational>) {
     std::string t = num::to_text(x);
     if (t.size() > kMaxExactTextChars)
-      throw std::length_error("an exact number of " + std::to_string(t.size()) + " characters, more than the " + std::to_string(kMaxExactTextChars) +
-                              " a trace's numbers may have");
+      throw std::length_error("an exact number of " + std::to_string(t.size()) + " characters, more than the " +
+                              std::to_string(kMaxExactTextChars) + " a trace's numbers may have");
     return '"' + t + '"';
   } else {
     const double d = num::to_double(x);  // a test on the value, not a search of every number's text

@@ -29,9 +29,9 @@ struct NoProbe {
 // order. float, double, int64, Rational, Interval and Mag model it.
 template <class N>
 concept NumberType = std::copyable<N> && std::constructible_from<N, int> && requires(const N a, const N b) {
-  { N(a + b) };
-  { N(a - b) };
-  { N(a * b) };
+  {N(a + b)};
+  {N(a - b)};
+  {N(a * b)};
   { a < b } -> std::convertible_to<bool>;
 };
 
@@ -40,7 +40,8 @@ concept NumberType = std::copyable<N> && std::constructible_from<N, int> && requ
 template <class P>
 concept StepProbe = requires {
   { P::on } -> std::convertible_to<bool>;
-} && (!P::on || requires(P& p) { p.step(std::uint32_t{1}, StepKind::init); });
+}
+&&(!P::on || requires(P & p) { p.step(std::uint32_t{1}, StepKind::init); });
 
 // A nested listing for the lifetime of a scope: `const auto call = nested<Refract>(probe);` enters
 // Refract's listing (probe.enter(id, listing)) and leaves it when `call` goes out of scope, so that
@@ -65,27 +66,27 @@ template <class Algo, class Probe> [[nodiscard]] auto nested(Probe& probe) {
 
 // Steps as stored: ranges into the shared variable and geometry arrays.
 struct StepRecord {
-  std::uint32_t line;   // in the listing of `scope`
+  std::uint32_t line;  // in the listing of `scope`
   StepKind kind;
-  std::uint8_t scope;   // 0: the algorithm's own listing; k: the callee scope_listing(k)
+  std::uint8_t scope;  // 0: the algorithm's own listing; k: the callee scope_listing(k)
   std::uint32_t var_begin, var_end, geo_begin, geo_end;
 };
 // A variable is a scalar, a vector of 2 or 3 numbers, a colour (r, g, b in [0, 1] by convention)
 // or a short list (an edge-table row, a traversal stack) of numbers or integers.
 enum class VarShape : std::uint8_t { scalar, vector, colour, list };
 struct VarRecord {
-  const char* name;     // a string literal from the algorithm
-  std::uint32_t slot;   // into the number or the integer store
+  const char* name;    // a string literal from the algorithm
+  std::uint32_t slot;  // into the number or the integer store
   bool is_int;
-  std::uint8_t count;   // how many values from slot: 1 for a scalar, 2 or 3 for a vector, 3 for a colour
+  std::uint8_t count;  // how many values from slot: 1 for a scalar, 2 or 3 for a vector, 3 for a colour
   VarShape shape = VarShape::scalar;
 };
 struct GeoRecord {
   GeoKind kind;
   Life life = Life::step;
-  std::uint16_t count;        // geo_arity(kind), or the list's length for variable kinds (< 2^16)
-  std::uint32_t slot;         // first of `count` values (integers for integer kinds)
-  const char* label = nullptr;  // a string literal from the algorithm, or none
+  std::uint16_t count;             // geo_arity(kind), or the list's length for variable kinds (< 2^16)
+  std::uint32_t slot;              // first of `count` values (integers for integer kinds)
+  const char* label = nullptr;     // a string literal from the algorithm, or none
   std::uint32_t value = kNoValue;  // the number store's slot of the item's value (a colour key), or none
   static constexpr std::uint32_t kNoValue = 0xffffffffu;
 };
@@ -206,7 +207,8 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
   // A short list (at most kMaxListLength entries) of numbers, or of integers.
   Recorder& list(const char* name, std::span<const Num> xs) {
     check_list(xs.size());
-    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::list});
+    vars_.push_back(
+        {name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::list});
     nums_.insert(nums_.end(), xs.begin(), xs.end());
     steps_.back().var_end++;
     return *this;
@@ -239,7 +241,8 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
   }
 
   Recorder& components(const char* name, std::initializer_list<Num> xs) {
-    vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::vector});
+    vars_.push_back(
+        {name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::vector});
     for (const Num& x : xs) nums_.push_back(x);
     steps_.back().var_end++;
     return *this;

@@ -12,8 +12,8 @@ namespace sw {
 
 // What a step does. Lessons and the timeline's "next step of kind" key on these names.
 enum class StepKind : std::uint8_t { init, decide, advance, plot, visit, hit, miss, done };
-inline constexpr std::array<std::string_view, 8> kStepKindNames = {
-    "init", "decide", "advance", "plot", "visit", "hit", "miss", "done"};
+inline constexpr std::array<std::string_view, 8> kStepKindNames = {"init",  "decide", "advance", "plot",
+                                                                   "visit", "hit",    "miss",    "done"};
 
 constexpr std::string_view kind_name(StepKind k) { return kStepKindNames[static_cast<std::size_t>(k)]; }
 inline std::optional<StepKind> parse_kind(std::string_view s) {
@@ -28,25 +28,25 @@ inline std::optional<StepKind> parse_kind(std::string_view s) {
 //  - integer: the values are integer indices (pixels, spans), not numbers of the mode.
 //  - decision: the item is an outcome of the algorithm's decisions (which pixel), compared even
 //    when only decisions are checked; the other items are rounded values.
-#define SW_GEO_KINDS(X)                                                    \
-  X(pixel, "pixel", 2, true, 2, true)           /* i j */                  \
-  X(point2, "point", 2, false, 2, false)        /* x y */                  \
-  X(segment2, "segment", 4, false, 2, false)    /* x0 y0 x1 y1 */          \
-  X(point3, "point3", 3, false, 3, false)       /* x y z */                \
-  X(segment3, "segment3", 6, false, 3, false)   /* x0 y0 z0 x1 y1 z1 */    \
-  X(ray3, "ray", 6, false, 3, false)            /* ox oy oz dx dy dz */    \
-  X(box3, "box", 6, false, 3, false)            /* min, max */             \
-  X(sphere, "sphere", 4, false, 3, false)       /* cx cy cz r */           \
-  X(triangle3, "triangle", 9, false, 3, false)  /* three vertices */       \
-  X(plane, "plane", 6, false, 3, false)         /* p, n */                 \
-  X(polyline, "polyline", 0, false, 2, false)   /* x y, x y, ... */        \
-  X(polygon, "polygon", 0, false, 2, false)     /* closed: x y, x y, ... */\
-  X(span, "span", 3, true, 2, true)             /* row j, first i, last i*/\
-  X(rect, "rect", 4, false, 2, false)           /* min x y, max x y */     \
-  X(circle, "circle", 3, false, 2, false)       /* cx cy r */              \
-  X(arrow, "arrow", 4, false, 2, false)         /* from x y, to x y */     \
-  X(node2, "node", 6, false, 2, false)          /* id, parent, min, max */ \
-  X(node3, "node3", 8, false, 3, false)         /* id, parent, min, max */
+#define SW_GEO_KINDS(X) \
+  X(pixel, "pixel", 2, true, 2, true)          /* i j */ \
+  X(point2, "point", 2, false, 2, false)       /* x y */ \
+  X(segment2, "segment", 4, false, 2, false)   /* x0 y0 x1 y1 */ \
+  X(point3, "point3", 3, false, 3, false)      /* x y z */ \
+  X(segment3, "segment3", 6, false, 3, false)  /* x0 y0 z0 x1 y1 z1 */ \
+  X(ray3, "ray", 6, false, 3, false)           /* ox oy oz dx dy dz */ \
+  X(box3, "box", 6, false, 3, false)           /* min, max */ \
+  X(sphere, "sphere", 4, false, 3, false)      /* cx cy cz r */ \
+  X(triangle3, "triangle", 9, false, 3, false) /* three vertices */ \
+  X(plane, "plane", 6, false, 3, false)        /* p, n */ \
+  X(polyline, "polyline", 0, false, 2, false)  /* x y, x y, ... */ \
+  X(polygon, "polygon", 0, false, 2, false)    /* closed: x y, x y, ... */ \
+  X(span, "span", 3, true, 2, true)            /* row j, first i, last i*/ \
+  X(rect, "rect", 4, false, 2, false)          /* min x y, max x y */ \
+  X(circle, "circle", 3, false, 2, false)      /* cx cy r */ \
+  X(arrow, "arrow", 4, false, 2, false)        /* from x y, to x y */ \
+  X(node2, "node", 6, false, 2, false)         /* id, parent, min, max */ \
+  X(node3, "node3", 8, false, 3, false)        /* id, parent, min, max */
 
 enum class GeoKind : std::uint8_t {
 #define SW_GEO_ENUM(id, name, arity, integer, dim, decision) id,
@@ -118,9 +118,9 @@ struct Listing {
 // from 1 in listing order), `lines` and `listing()`. The names are the lines' stable ids.
 #define SW_LISTING_ENUM(name, text) name,
 #define SW_LISTING_LINE(name, text) ::sw::ListingLine{#name, text},
-#define SW_LISTING(TITLE, LINES)                                                            \
-  enum Line : std::uint32_t { kNoLine_ = 0, LINES(SW_LISTING_ENUM) };                       \
-  static constexpr ::sw::ListingLine lines[] = {LINES(SW_LISTING_LINE)};                    \
+#define SW_LISTING(TITLE, LINES) \
+  enum Line : std::uint32_t { kNoLine_ = 0, LINES(SW_LISTING_ENUM) }; \
+  static constexpr ::sw::ListingLine lines[] = {LINES(SW_LISTING_LINE)}; \
   static constexpr ::sw::Listing listing() { return {TITLE, lines}; }
 
 }  // namespace sw

@@ -31,13 +31,14 @@ template <class Num> Vec2<Num> bezier_at(const std::array<Vec2<Num>, 4>& p, cons
 
 struct BezierForwardDiff {
   static constexpr std::string_view id = "bezier-forward-diff";
-  static constexpr std::string_view summary = "Cubic Bezier: points at t = k/n by forward differences, joined by dda-line segments";
-#define SW_LINES_BEZIER_FORWARD_DIFF(X)                                                                       \
+  static constexpr std::string_view summary =
+      "Cubic Bezier: points at t = k/n by forward differences, joined by dda-line segments";
+#define SW_LINES_BEZIER_FORWARD_DIFF(X) \
   X(samples, "q_k <- B(k/n) for k = 0, 1, 2, 3             -- four curve points start the table (Bernstein form)") \
-  X(table, "d1 <- q_1 - q_0; d2 <- (q_2 - q_1) - d1; d3 <- ((q_3 - q_2) - (q_2 - q_1)) - d2   -- vectors")        \
-  X(test, "for k <- 0, 1, ..., n - 1:")                                                                       \
-  X(segment, "    draw q -> q + d1 with dda-line             -- q + d1 is B((k + 1)/n)")                        \
-  X(step, "    q <- q + d1; d1 <- d1 + d2; d2 <- d2 + d3   -- lowest first, each with the old next")            \
+  X(table, "d1 <- q_1 - q_0; d2 <- (q_2 - q_1) - d1; d3 <- ((q_3 - q_2) - (q_2 - q_1)) - d2   -- vectors") \
+  X(test, "for k <- 0, 1, ..., n - 1:") \
+  X(segment, "    draw q -> q + d1 with dda-line             -- q + d1 is B((k + 1)/n)") \
+  X(step, "    q <- q + d1; d1 <- d1 + d2; d2 <- d2 + d3   -- lowest first, each with the old next") \
   X(done, "done")
   SW_LISTING("Bezier by forward differences", SW_LINES_BEZIER_FORWARD_DIFF)
 #undef SW_LINES_BEZIER_FORWARD_DIFF
@@ -52,7 +53,13 @@ void bezier_forward_diff(const Bezier<Num>& b, std::vector<Pixel>& out, Probe& p
     std::vector<Vec2<Num>> curve;  // the curve itself, for the canvas: 8 points per segment, at most 512
     const std::int64_t m = std::min<std::int64_t>(8 * b.n, 512);
     for (std::int64_t k = 0; k <= m; ++k) curve.push_back(bezier_at(b.p, Num(k) / Num(m)));
-    probe.step(L::samples, StepKind::init).vec("q0", q[0]).vec("q1", q[1]).vec("q2", q[2]).vec("q3", q[3]).geo_list(GeoKind::polyline, curve).keep();
+    probe.step(L::samples, StepKind::init)
+        .vec("q0", q[0])
+        .vec("q1", q[1])
+        .vec("q2", q[2])
+        .vec("q3", q[3])
+        .geo_list(GeoKind::polyline, curve)
+        .keep();
   }
   const Vec2<Num> e0 = q[1] - q[0], e1 = q[2] - q[1], e2 = q[3] - q[2];
   Vec2<Num> d1 = e0, d2 = e1 - e0;

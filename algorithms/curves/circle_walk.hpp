@@ -20,9 +20,7 @@ struct CircleInput {
 };
 
 // The start of the walk: P and its first and (constant) second differences at (-r, 0).
-template <class Num> struct OctantStart {
-  Num p, px, py, pxx, pyy;
-};
+template <class Num> struct OctantStart { Num p, px, py, pxx, pyy; };
 
 // The 8 mirror images of the octant point (x, y) about the centre, each once.
 inline int mirror_images(const CircleInput& c, std::int64_t x, std::int64_t y, std::array<Pixel, 8>& img) {
@@ -42,7 +40,8 @@ inline int mirror_images(const CircleInput& c, std::int64_t x, std::int64_t y, s
 template <class L, NumberType Num, StepProbe Probe>
 void circle_octant_walk(const CircleInput& c, OctantStart<Num> s, std::vector<Pixel>& out, Probe& probe) {
   std::int64_t x = -c.r, y = 0;
-  if constexpr (Probe::on) probe.step(L::start, StepKind::init).idx("x", x).idx("y", y).circle(Vec2<Num>{Num(c.cx), Num(c.cy)}, Num(c.r)).keep();
+  if constexpr (Probe::on)
+    probe.step(L::start, StepKind::init).idx("x", x).idx("y", y).circle(Vec2<Num>{Num(c.cx), Num(c.cy)}, Num(c.r)).keep();
   if constexpr (Probe::on) probe.step(L::init, StepKind::init).num(L::kP, s.p).num(L::kPx, s.px).num(L::kPy, s.py);
   std::array<Pixel, 8> img;
   // Each pass moves y up by one and the octant holds at most r + 1 rows: bounded.

@@ -190,8 +190,12 @@ WalkEnd implicit_curve(const ImplicitPoly<Num>& P, std::vector<Pixel>& out, Prob
     }
     const bool diagonal = num::sign(T.d[0][0]) * sb * sgb < 0;
     if constexpr (Probe::on)  // the midpoint, coloured by the sign of P there that decides
-      probe.step(L::decide, StepKind::decide).num("PM", T.d[0][0]).idx("diagonal", diagonal)
-          .point(Vec2<Num>{half(T.u), half(T.v)}).label("P(M)").value(T.d[0][0]);
+      probe.step(L::decide, StepKind::decide)
+          .num("PM", T.d[0][0])
+          .idx("diagonal", diagonal)
+          .point(Vec2<Num>{half(T.u), half(T.v)})
+          .label("P(M)")
+          .value(T.d[0][0]);
     Pixel next = p;
     pixel_axis(next, a) += sa;
     if (diagonal) pixel_axis(next, b) += sb;

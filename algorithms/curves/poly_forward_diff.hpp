@@ -37,12 +37,12 @@ template <class Num> std::vector<Vec2<Num>> curve_samples(const Cubic<Num>& p) {
 struct PolyForwardDiff {
   static constexpr std::string_view id = "poly-forward-diff";
   static constexpr std::string_view summary = "Cubic y = P(x) by a forward-difference table: three additions per pixel";
-#define SW_LINES_POLY_FORWARD_DIFF(X)                                                                      \
-  X(samples, "y_k <- P(xs + k) for k = 0, 1, 2, 3          -- four samples start the table")                \
+#define SW_LINES_POLY_FORWARD_DIFF(X) \
+  X(samples, "y_k <- P(xs + k) for k = 0, 1, 2, 3          -- four samples start the table") \
   X(table, "d1 <- y_1 - y_0; d2 <- (y_2 - y_1) - d1; d3 <- ((y_3 - y_2) - (y_2 - y_1)) - d2   -- d3 = 6a") \
-  X(start, "x <- xs; y <- y_0")                                                                            \
-  X(test, "while x < xe:")                                                                                 \
-  X(plot, "    plot (x, round(y))                      -- round(v) = floor(v + 1/2)")                       \
+  X(start, "x <- xs; y <- y_0") \
+  X(test, "while x < xe:") \
+  X(plot, "    plot (x, round(y))                      -- round(v) = floor(v + 1/2)") \
   X(step, "    x <- x + 1; y <- y + d1; d1 <- d1 + d2; d2 <- d2 + d3   -- lowest first, each with the old next") \
   X(done, "done")
   SW_LISTING("Cubic by forward differences", SW_LINES_POLY_FORWARD_DIFF)
@@ -57,7 +57,13 @@ void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& prob
   std::array<Num, 4> y;
   for (int k = 0; k < 4; ++k) y[k] = num::polynomial(p.c, Num(p.xs) + Num(k));
   if constexpr (Probe::on)
-    probe.step(L::samples, StepKind::init).num("y0", y[0]).num("y1", y[1]).num("y2", y[2]).num("y3", y[3]).geo_list(GeoKind::polyline, curve_samples(p)).keep();
+    probe.step(L::samples, StepKind::init)
+        .num("y0", y[0])
+        .num("y1", y[1])
+        .num("y2", y[2])
+        .num("y3", y[3])
+        .geo_list(GeoKind::polyline, curve_samples(p))
+        .keep();
   const Num e0 = y[1] - y[0], e1 = y[2] - y[1], e2 = y[3] - y[2];
   Num d1 = e0, d2 = e1 - e0;
   const Num d3 = e2 - e1 - d2;
@@ -68,7 +74,8 @@ void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& prob
   for (; x < p.xe; ++x) {  // bounded: xe - xs is validated
     const Pixel px{x, num::floor_int(yv + Num(0.5))};
     out.push_back(px);
-    if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).idx("x", x).num("y", yv).idx("j", px.y).pixel(px).point(Vec2<Num>{Num(x), yv});
+    if constexpr (Probe::on)
+      probe.step(L::plot, StepKind::plot).idx("x", x).num("y", yv).idx("j", px.y).pixel(px).point(Vec2<Num>{Num(x), yv});
     yv = yv + d1;
     d1 = d1 + d2;
     d2 = d2 + d3;
@@ -77,7 +84,8 @@ void poly_forward_diff(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& prob
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("x", x);
 }
 
-template <NumberType Num, StepProbe Probe> void PolyForwardDiff::operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const {
+template <NumberType Num, StepProbe Probe>
+void PolyForwardDiff::operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const {
   poly_forward_diff<Num>(p, out, probe);
 }
 

@@ -8,10 +8,10 @@ namespace sw::curves {
 struct PolyHorner {
   static constexpr std::string_view id = "poly-horner";
   static constexpr std::string_view summary = "Cubic y = P(x) evaluated afresh at each x by Horner's rule (the baseline)";
-#define SW_LINES_POLY_HORNER(X)                                                                 \
-  X(test, "for x <- xs, xs + 1, ..., xe - 1:")                                                  \
+#define SW_LINES_POLY_HORNER(X) \
+  X(test, "for x <- xs, xs + 1, ..., xe - 1:") \
   X(eval, "    y <- ((a x + b) x + c) x + d            -- three multiply-adds, nothing carried") \
-  X(plot, "    plot (x, round(y))                      -- round(v) = floor(v + 1/2)")            \
+  X(plot, "    plot (x, round(y))                      -- round(v) = floor(v + 1/2)") \
   X(done, "done")
   SW_LISTING("Cubic by Horner's rule", SW_LINES_POLY_HORNER)
 #undef SW_LINES_POLY_HORNER
@@ -35,7 +35,8 @@ void poly_horner(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) {
   if constexpr (Probe::on) probe.step(L::done, StepKind::done);
 }
 
-template <NumberType Num, StepProbe Probe> void PolyHorner::operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const {
+template <NumberType Num, StepProbe Probe>
+void PolyHorner::operator()(const Cubic<Num>& p, std::vector<Pixel>& out, Probe& probe) const {
   poly_horner<Num>(p, out, probe);
 }
 

@@ -46,14 +46,18 @@ template <class Num> ClipVertex<Num> clip_lerp(const ClipVertex<Num>& p, const C
 
 // Sutherland-Hodgman against w >= w_near, one step per edge and per kept corner. L names the
 // listing lines clip_edge, clip_keep and clip_cut.
-template <class L, NumberType Num, StepProbe Probe>
-ClipPolygon<Num> clip_near(const ClipTriangle<Num>& t, Probe& probe) {
+template <class L, NumberType Num, StepProbe Probe> ClipPolygon<Num> clip_near(const ClipTriangle<Num>& t, Probe& probe) {
   ClipPolygon<Num> out;
   const Num wn = w_near<Num>();
   // A kept corner's step: its clip coordinates, its attributes and where it lands on screen.
   [[maybe_unused]] auto corner = [&](auto& step, const ClipVertex<Num>& c, std::size_t k) {
     const Vec2<Num> s{c.c[0] / c.w(), c.c[1] / c.w()};
-    step.idx("k", std::int64_t(k)).list("c", std::span<const Num>(c.c)).list("c_attrs", std::span<const Num>(c.a.data(), t.n)).point(s).label("c").keep();
+    step.idx("k", std::int64_t(k))
+        .list("c", std::span<const Num>(c.c))
+        .list("c_attrs", std::span<const Num>(c.a.data(), t.n))
+        .point(s)
+        .label("c")
+        .keep();
   };
   for (std::size_t e = 0; e < 3; ++e) {
     const ClipVertex<Num>& p = t.v[e];
@@ -61,7 +65,13 @@ ClipPolygon<Num> clip_near(const ClipTriangle<Num>& t, Probe& probe) {
     const Num dp = p.w() - wn, dq = q.w() - wn;
     const bool keep = !(dp < Num(0));
     const bool cut = (dp < Num(0) && Num(0) < dq) || (Num(0) < dp && dq < Num(0));
-    if constexpr (Probe::on) probe.step(L::clip_edge, StepKind::decide).idx("P", std::int64_t(e)).num("d_P", dp).num("d_Q", dq).idx("keep", keep).idx("cut", cut);
+    if constexpr (Probe::on)
+      probe.step(L::clip_edge, StepKind::decide)
+          .idx("P", std::int64_t(e))
+          .num("d_P", dp)
+          .num("d_Q", dq)
+          .idx("keep", keep)
+          .idx("cut", cut);
     if (keep) {
       out.c[out.k] = p;
       if constexpr (Probe::on) corner(probe.step(L::clip_keep, StepKind::visit), p, out.k);

@@ -23,7 +23,7 @@ template <class Num> int outcode(const Vec2<Num>& p, const Vec2<Num>& lo, const 
 
 template <class Num> struct ClippedSegment {
   std::optional<std::array<Vec2<Num>, 2>> segment;  // none: the segment misses the window
-  bool bound_hit = false;                            // the cut bound stopped the loop (rounded modes only)
+  bool bound_hit = false;                           // the cut bound stopped the loop (rounded modes only)
 };
 
 struct CohenSutherland {
@@ -34,8 +34,9 @@ struct CohenSutherland {
   X(loop, "repeat (at most 4 cuts):") \
   X(accept, "    if c0 | c1 = 0: return [p0, p1]    -- both ends in the closed window") \
   X(reject, "    if c0 & c1 != 0: return nothing    -- both ends beyond the same boundary line") \
-  X(cut_x, "    k <- 0 if c0 != 0, else 1; b <- lowest bit of c_k; if b is 1 or 2: X <- xmin or xmax;" \
-           " p_k <- (X, y0 + (y1 - y0) (X - x0) / (x1 - x0))") \
+  X(cut_x, \
+    "    k <- 0 if c0 != 0, else 1; b <- lowest bit of c_k; if b is 1 or 2: X <- xmin or xmax;" \
+    " p_k <- (X, y0 + (y1 - y0) (X - x0) / (x1 - x0))") \
   X(cut_y, "    else: Y <- ymin or ymax; p_k <- (x0 + (x1 - x0) (Y - y0) / (y1 - y0), Y)") \
   X(recode, "    c_k <- code(p_k)")
   SW_LISTING("Cohen-Sutherland line clipping", SW_FILL_COHEN_SUTHERLAND)
@@ -58,8 +59,18 @@ ClippedSegment<Num> cohen_sutherland(Vec2<Num> p0, Vec2<Num> p1, const Vec2<Num>
     probe.step(L::codes, StepKind::init).idx("c0", c[0]).idx("c1", c[1]);
     probe.rect(lo, hi).label("window").keep();
     using V = Vec2<Num>;
-    probe.segment(V{lo.x, f0.y}, V{lo.x, f1.y}).label("x = xmin").keep().segment(V{hi.x, f0.y}, V{hi.x, f1.y}).label("x = xmax").keep();
-    probe.segment(V{f0.x, lo.y}, V{f1.x, lo.y}).label("y = ymin").keep().segment(V{f0.x, hi.y}, V{f1.x, hi.y}).label("y = ymax").keep();
+    probe.segment(V{lo.x, f0.y}, V{lo.x, f1.y})
+        .label("x = xmin")
+        .keep()
+        .segment(V{hi.x, f0.y}, V{hi.x, f1.y})
+        .label("x = xmax")
+        .keep();
+    probe.segment(V{f0.x, lo.y}, V{f1.x, lo.y})
+        .label("y = ymin")
+        .keep()
+        .segment(V{f0.x, hi.y}, V{f1.x, hi.y})
+        .label("y = ymax")
+        .keep();
     probe.segment(p0, p1).label("segment").keep();
     probe.point(p0).label("p0").value(Num(c[0])).replace().point(p1).label("p1").value(Num(c[1])).replace();
   }
@@ -68,7 +79,8 @@ ClippedSegment<Num> cohen_sutherland(Vec2<Num> p0, Vec2<Num> p1, const Vec2<Num>
   constexpr int kMaxCuts = 4;
   for (int cuts = 0;; ++cuts) {  // bounded: the reject test returns at cuts == kMaxCuts
     if ((c[0] | c[1]) == 0) {
-      if constexpr (Probe::on) probe.step(L::accept, StepKind::hit).idx("c0", c[0]).idx("c1", c[1]).segment(p[0], p[1]).label("clipped").keep();
+      if constexpr (Probe::on)
+        probe.step(L::accept, StepKind::hit).idx("c0", c[0]).idx("c1", c[1]).segment(p[0], p[1]).label("clipped").keep();
       return {p, false};
     }
     if ((c[0] & c[1]) != 0 || cuts == kMaxCuts) {
@@ -85,11 +97,25 @@ ClippedSegment<Num> cohen_sutherland(Vec2<Num> p0, Vec2<Num> p1, const Vec2<Num>
     if (bit == kLeft || bit == kRight) {
       const Num x = bit == kLeft ? lo.x : hi.x;
       p[k] = {x, p[0].y + d.y * (x - p[0].x) / d.x};
-      if constexpr (Probe::on) probe.step(L::cut_x, StepKind::advance).idx("k", k).idx("b", bit).num("x", p[k].x).num("y", p[k].y).point(p[k]).label("cut");
+      if constexpr (Probe::on)
+        probe.step(L::cut_x, StepKind::advance)
+            .idx("k", k)
+            .idx("b", bit)
+            .num("x", p[k].x)
+            .num("y", p[k].y)
+            .point(p[k])
+            .label("cut");
     } else {
       const Num y = bit == kBelow ? lo.y : hi.y;
       p[k] = {p[0].x + d.x * (y - p[0].y) / d.y, y};
-      if constexpr (Probe::on) probe.step(L::cut_y, StepKind::advance).idx("k", k).idx("b", bit).num("x", p[k].x).num("y", p[k].y).point(p[k]).label("cut");
+      if constexpr (Probe::on)
+        probe.step(L::cut_y, StepKind::advance)
+            .idx("k", k)
+            .idx("b", bit)
+            .num("x", p[k].x)
+            .num("y", p[k].y)
+            .point(p[k])
+            .label("cut");
     }
     c[k] = outcode(p[k], lo, hi);
     if constexpr (Probe::on) {

@@ -65,17 +65,28 @@ void double_dda(Triangle<Num> v, const Screen& sc, const DdaRecord& rec, FillRes
   const Vary<Num>&b = v[0], &m = v[1], &t = v[2];
   if constexpr (Probe::on) {
     const std::array<Vec2<Num>, 3> corners{b.p, m.p, t.p};
-    auto& st = probe.step(L::sort, StepKind::init).vec("b", b.p).vec("m", m.p).vec("t", t.p).geo_list(GeoKind::polygon, std::span(corners));
+    auto& st = probe.step(L::sort, StepKind::init)
+                   .vec("b", b.p)
+                   .vec("m", m.p)
+                   .vec("t", t.p)
+                   .geo_list(GeoKind::polygon, std::span(corners));
     if (rec.keep) st.keep();
     if constexpr (kScreen) {
       // The screen drawn as the union of its pixels' squares: [i0 - 1/2, i1 - 1/2) x [j0 - 1/2, j1 - 1/2).
       const Num h(0.5);
-      probe.step(L::screen, StepKind::init).idx("i0", sc.i0).idx("j0", sc.j0).idx("i1", sc.i1).idx("j1", sc.j1)
-          .rect({Num(sc.i0) - h, Num(sc.j0) - h}, {Num(sc.i1) - h, Num(sc.j1) - h}).label("screen").keep();
+      probe.step(L::screen, StepKind::init)
+          .idx("i0", sc.i0)
+          .idx("j0", sc.j0)
+          .idx("i1", sc.i1)
+          .idx("j1", sc.j1)
+          .rect({Num(sc.i0) - h, Num(sc.j0) - h}, {Num(sc.i1) - h, Num(sc.j1) - h})
+          .label("screen")
+          .keep();
     }
   }
   if (!(b.p.y < t.p.y)) {  // no height: no row
-    if constexpr (Probe::on) if (rec.done) probe.step(L::done, StepKind::done).idx("pixels", 0);
+    if constexpr (Probe::on)
+      if (rec.done) probe.step(L::done, StepKind::done).idx("pixels", 0);
     return;
   }
   std::int64_t j = kScreen ? first_on_screen(b.p.y, sc.j0, sc.j1) : 0;  // Dp0::screen: the row, the first on screen at or above b
@@ -86,7 +97,8 @@ void double_dda(Triangle<Num> v, const Screen& sc, const DdaRecord& rec, FillRes
     else if constexpr (Start == Dp0::sample) return std::pair{p0 + (Num(num::ceil_int(p0.p.y)) - p0.p.y) * dq, dq};
     else return std::pair{p0 + (Num(j) - p0.p.y) * dq, dq};
   };
-  auto record_edge = [&](auto line, const char* name, const Vary<Num>& q, const Vary<Num>& dq, const Vary<Num>& p0, const Vary<Num>& p1) {
+  auto record_edge = [&](auto line, const char* name, const Vary<Num>& q, const Vary<Num>& dq, const Vary<Num>& p0,
+                         const Vary<Num>& p1) {
     if constexpr (Probe::on) {
       auto& st = probe.step(line, StepKind::init);
       if constexpr (kScreen) st.idx("j", j);
@@ -109,7 +121,8 @@ void double_dda(Triangle<Num> v, const Screen& sc, const DdaRecord& rec, FillRes
       return;
     }
     const Vary<Num> ds = (r - l) / (r.p.x - l.p.x);
-    std::int64_t i = kScreen ? first_on_screen(l.p.x, sc.i0, sc.i1) : 0;  // Dp0::screen: the first column on screen at or right of l
+    std::int64_t i =
+        kScreen ? first_on_screen(l.p.x, sc.i0, sc.i1) : 0;  // Dp0::screen: the first column on screen at or right of l
     Vary<Num> s = l;
     if constexpr (Start == Dp0::sample) s = l + (Num(num::ceil_int(l.p.x)) - l.p.x) * ds;
     if constexpr (kScreen) s = l + (Num(i) - l.p.x) * ds;
@@ -131,13 +144,15 @@ void double_dda(Triangle<Num> v, const Screen& sc, const DdaRecord& rec, FillRes
       for (; i < sc.i1 && Num(i) < r.p.x; ++i) sample(Pixel{i, j});  // span_test: a loop header
     } else {
       const std::int64_t bound = num::ceil_int(r.p.x) - num::floor_int(l.p.x) + 2;  // samples in [l_x, r_x), plus a stall pass
-      for (std::int64_t k = 0; k < bound && s.p.x < r.p.x; ++k) sample(Pixel{num::floor_int(s.p.x + Num(0.5)), num::floor_int(s.p.y + Num(0.5))});
+      for (std::int64_t k = 0; k < bound && s.p.x < r.p.x; ++k)
+        sample(Pixel{num::floor_int(s.p.x + Num(0.5)), num::floor_int(s.p.y + Num(0.5))});
     }
   };
   // The rows of one half: edge q from p0 to p1 against the long edge, while q_y < p1_y (Dp0::screen:
   // from row j while j < p1_y and j < j1; on entry j is first(p0_y, j0, j1), so the lower half ends
   // where the upper half begins).
-  auto half = [&](auto edge_line, auto span_line, auto step_line, const char* name, const char* qname, const Vary<Num>& p0, const Vary<Num>& p1) {
+  auto half = [&](auto edge_line, auto span_line, auto step_line, const char* name, const char* qname, const Vary<Num>& p0,
+                  const Vary<Num>& p1) {
     if (!(p0.p.y < p1.p.y)) {
       if constexpr (Probe::on) probe.step(edge_line, StepKind::decide).idx("flat", 1);
       return;
@@ -170,15 +185,23 @@ void double_dda(Triangle<Num> v, const Screen& sc, const DdaRecord& rec, FillRes
   };
   half(L::lower_edge, L::lower_span, L::lower_step, "a", "q_a", b, m);
   half(L::upper_edge, L::upper_span, L::upper_step, "e", "q_e", m, t);
-  if constexpr (Probe::on) if (rec.done) probe.step(L::done, StepKind::done).idx("pixels", static_cast<std::int64_t>(out.pixels.size()));
+  if constexpr (Probe::on)
+    if (rec.done) probe.step(L::done, StepKind::done).idx("pixels", static_cast<std::int64_t>(out.pixels.size()));
 }
 
 // The plot of triangle-dda and raster-clip: the pixel with s's attributes (three: its colour in the views).
-template <class L, NumberType Num, StepProbe Probe> void plot_attrs(const Pixel& px, const Vary<Num>& s, FillResult<Num>& out, Probe& probe) {
+template <class L, NumberType Num, StepProbe Probe>
+void plot_attrs(const Pixel& px, const Vary<Num>& s, FillResult<Num>& out, Probe& probe) {
   out.pixels.push_back(px);
   out.values.insert(out.values.end(), s.a.begin(), s.a.begin() + s.n);
   if constexpr (Probe::on) {
-    auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("values", s.attrs()).pixel(px).point(s.p).label("s");
+    auto& st = probe.step(L::plot, StepKind::plot)
+                   .idx("i", px.x)
+                   .idx("j", px.y)
+                   .list("values", s.attrs())
+                   .pixel(px)
+                   .point(s.p)
+                   .label("s");
     if (s.n == 3) st.colour("colour", Vec3<Num>{s.a[0], s.a[1], s.a[2]});
   }
 }

@@ -23,43 +23,45 @@
 
 namespace sw::fill {
 
-#define SW_FILL_INTERP(X, PROJECT, PLOT)                                                                      \
-  X(clip_edge, "for each edge P -> Q: d_P <- w_P - w_near, d_Q <- w_Q - w_near     -- w_near = 1")        \
-  X(clip_keep, "    if d_P >= 0: keep P")                                                                 \
-  X(clip_cut, "    if d_P d_Q < 0: keep P + t (Q - P), t <- d_P / (d_P - d_Q)  -- attributes too")          \
-  X(fan, "kept corners c_0 .. c_k-1 (k = 0, 3 or 4): triangles (c_0, c_1, c_2), (c_0, c_2, c_3)")          \
-  X(project, PROJECT)                                                                                       \
-  X(sort, "    sort by y: b (bottom), m (middle), t (top)")                                                 \
-  X(long_edge, "    edge c, b -> t: dq_c <- (t - b) / (t_y - b_y); q_c <- b + (ceil(b_y) - b_y) dq_c")      \
-  X(lower_edge, "    if m_y > b_y: edge a, b -> m: dq_a, q_a as for c")                                     \
-  X(lower_rows, "    while q_a,y < m_y:")                                                                   \
-  X(lower_span, "        span(q_a, q_c)")                                                                   \
-  X(lower_step, "        q_a <- q_a + dq_a; q_c <- q_c + dq_c")                                             \
-  X(upper_edge, "    if t_y > m_y: edge e, m -> t: dq_e, q_e as for c")                                     \
-  X(upper_rows, "    while q_e,y < t_y:")                                                                   \
-  X(upper_span, "        span(q_e, q_c)")                                                                   \
-  X(upper_step, "        q_e <- q_e + dq_e; q_c <- q_c + dq_c")                                             \
+#define SW_FILL_INTERP(X, PROJECT, PLOT) \
+  X(clip_edge, "for each edge P -> Q: d_P <- w_P - w_near, d_Q <- w_Q - w_near     -- w_near = 1") \
+  X(clip_keep, "    if d_P >= 0: keep P") \
+  X(clip_cut, "    if d_P d_Q < 0: keep P + t (Q - P), t <- d_P / (d_P - d_Q)  -- attributes too") \
+  X(fan, "kept corners c_0 .. c_k-1 (k = 0, 3 or 4): triangles (c_0, c_1, c_2), (c_0, c_2, c_3)") \
+  X(project, PROJECT) \
+  X(sort, "    sort by y: b (bottom), m (middle), t (top)") \
+  X(long_edge, "    edge c, b -> t: dq_c <- (t - b) / (t_y - b_y); q_c <- b + (ceil(b_y) - b_y) dq_c") \
+  X(lower_edge, "    if m_y > b_y: edge a, b -> m: dq_a, q_a as for c") \
+  X(lower_rows, "    while q_a,y < m_y:") \
+  X(lower_span, "        span(q_a, q_c)") \
+  X(lower_step, "        q_a <- q_a + dq_a; q_c <- q_c + dq_c") \
+  X(upper_edge, "    if t_y > m_y: edge e, m -> t: dq_e, q_e as for c") \
+  X(upper_rows, "    while q_e,y < t_y:") \
+  X(upper_span, "        span(q_e, q_c)") \
+  X(upper_step, "        q_e <- q_e + dq_e; q_c <- q_c + dq_c") \
   X(span_start, "span(l, r): order by x; if l_x < r_x: ds <- (r - l) / (r_x - l_x); s <- l + (ceil(l_x) - l_x) ds") \
-  X(span_test, "    while s_x < r_x:")                                                                      \
-  X(plot, PLOT)                                                                                             \
-  X(span_step, "        s <- s + ds")                                                                       \
+  X(span_test, "    while s_x < r_x:") \
+  X(plot, PLOT) \
+  X(span_step, "        s <- s + ds") \
   X(done, "the triangles' pixels, merged into scanline order")
 
-#define SW_FILL_PERSPECTIVE(X)                                                                                \
-  SW_FILL_INTERP(X, "each triangle: corner c -> (c_x/c_w, c_y/c_w), h <- c_attrs / c_w, q <- 1 / c_w",       \
+#define SW_FILL_PERSPECTIVE(X) \
+  SW_FILL_INTERP(X, "each triangle: corner c -> (c_x/c_w, c_y/c_w), h <- c_attrs / c_w, q <- 1 / c_w", \
                  "        plot (round(s_x), round(s_y)) with attributes s_h / s_q; texel <- checker(a_0, a_1)")
-#define SW_FILL_AFFINE(X)                                                                                     \
-  SW_FILL_INTERP(X, "each triangle: corner c -> (c_x/c_w, c_y/c_w), h <- c_attrs     -- no 1/w",             \
+#define SW_FILL_AFFINE(X) \
+  SW_FILL_INTERP(X, "each triangle: corner c -> (c_x/c_w, c_y/c_w), h <- c_attrs     -- no 1/w", \
                  "        plot (round(s_x), round(s_y)) with attributes s_h; texel <- checker(a_0, a_1)")
 
 struct PerspectiveInterp {
   static constexpr std::string_view id = "perspective-interp";
-  static constexpr std::string_view summary = "Perspective-correct attributes: clip at w_near, interpolate a/w and 1/w on screen, divide per pixel";
+  static constexpr std::string_view summary =
+      "Perspective-correct attributes: clip at w_near, interpolate a/w and 1/w on screen, divide per pixel";
   SW_LISTING("Perspective-correct (hyperbolic) interpolation", SW_FILL_PERSPECTIVE)
 };
 struct AffineInterp {
   static constexpr std::string_view id = "affine-interp";
-  static constexpr std::string_view summary = "Affine attributes in perspective: clip at w_near, interpolate a itself on screen (no divide)";
+  static constexpr std::string_view summary =
+      "Affine attributes in perspective: clip at w_near, interpolate a itself on screen (no divide)";
   SW_LISTING("Affine (screen-linear) interpolation", SW_FILL_AFFINE)
 };
 #undef SW_FILL_AFFINE
@@ -88,7 +90,10 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
   if constexpr (Probe::on) {
     std::array<Vec2<Num>, 4> screen;
     for (std::size_t k = 0; k < poly.k; ++k) screen[k] = {poly.c[k].c[0] / poly.c[k].w(), poly.c[k].c[1] / poly.c[k].w()};
-    probe.step(L::fan, StepKind::init).idx("corners", std::int64_t(poly.k)).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(screen.data(), poly.k)).keep();
+    probe.step(L::fan, StepKind::init)
+        .idx("corners", std::int64_t(poly.k))
+        .geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(screen.data(), poly.k))
+        .keep();
   }
   std::vector<std::size_t> firsts;  // where each triangle's pixels start
   for (std::size_t f = 0; f + 2 < poly.k; ++f) {
@@ -110,17 +115,18 @@ void perspective_interp(const ClipTriangle<Num>& tri, FillResult<Num>& out, Prob
     }
     firsts.push_back(out.pixels.size());
     // The triangle by the double DDA, plotting the n attributes at each pixel (perspective: h / q).
-    double_dda<L, Dp0::sample>(h, Screen{}, {"q_h", "dq_h", "ds_h", false, false}, out, probe, [&](const Pixel& px, const Vary<Num>& s) {
-      std::array<Num, kMaxAttrs> a{};
-      for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? s.a[c] / s.a[n] : s.a[c];
-      out.pixels.push_back(px);
-      out.values.insert(out.values.end(), a.begin(), a.begin() + n);
-      if constexpr (Probe::on) {
-        auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("h", s.attrs());
-        const std::span<const Num> vals(a.data(), n);
-        st.list("values", vals).colour("texel", checker_texel<Num>(vals)).pixel(px).point(s.p).label("s");
-      }
-    });
+    double_dda<L, Dp0::sample>(
+        h, Screen{}, {"q_h", "dq_h", "ds_h", false, false}, out, probe, [&](const Pixel& px, const Vary<Num>& s) {
+          std::array<Num, kMaxAttrs> a{};
+          for (std::size_t c = 0; c < n; ++c) a[c] = Persp ? s.a[c] / s.a[n] : s.a[c];
+          out.pixels.push_back(px);
+          out.values.insert(out.values.end(), a.begin(), a.begin() + n);
+          if constexpr (Probe::on) {
+            auto& st = probe.step(L::plot, StepKind::plot).idx("i", px.x).idx("j", px.y).list("h", s.attrs());
+            const std::span<const Num> vals(a.data(), n);
+            st.list("values", vals).colour("texel", checker_texel<Num>(vals)).pixel(px).point(s.p).label("s");
+          }
+        });
   }
   if (firsts.size() == 2 && firsts[1] > firsts[0] && firsts[1] < out.pixels.size()) {  // two triangles: merge by (j, i)
     std::vector<std::size_t> order(out.pixels.size());

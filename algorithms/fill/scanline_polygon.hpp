@@ -17,17 +17,17 @@ namespace sw::fill {
 struct ScanlinePolygon {
   static constexpr std::string_view id = "scanline-polygon";
   static constexpr std::string_view summary = "Scanline polygon fill: edge table, active edges, even-odd or nonzero winding";
-#define SW_FILL_SCANLINE_POLYGON(X)                                                                                 \
-  X(edge, "for each edge p -> q with p_y != q_y:      -- horizontal edges cross no row")                           \
+#define SW_FILL_SCANLINE_POLYGON(X) \
+  X(edge, "for each edge p -> q with p_y != q_y:      -- horizontal edges cross no row") \
   X(bucket, "    put it in the edge table at row ceil(y_low): x <- x at that row, dx <- per row, dir <- +1 up, -1 down") \
-  X(first, "j <- the edge table's lowest row")                                                                      \
-  X(rows, "while the edge table or the active list holds an edge:")                                                 \
-  X(add, "    move the edge table's edges of row j to the active list")                                            \
-  X(drop, "    drop the active edges with y_high <= j   -- rows [y_low, y_high)")                                  \
-  X(sort, "    sort the active list by x")                                                                          \
-  X(spans, "    w <- 0; for each active edge k in x order: w <- w + dir_k")                                        \
-  X(fill, "        if w is odd (even-odd) or w != 0 (nonzero): plot i = ceil(x_k) .. ceil(x_k+1) - 1")           \
-  X(advance, "    x <- x + dx for every active edge; j <- j + 1, or the next table row if none is active")        \
+  X(first, "j <- the edge table's lowest row") \
+  X(rows, "while the edge table or the active list holds an edge:") \
+  X(add, "    move the edge table's edges of row j to the active list") \
+  X(drop, "    drop the active edges with y_high <= j   -- rows [y_low, y_high)") \
+  X(sort, "    sort the active list by x") \
+  X(spans, "    w <- 0; for each active edge k in x order: w <- w + dir_k") \
+  X(fill, "        if w is odd (even-odd) or w != 0 (nonzero): plot i = ceil(x_k) .. ceil(x_k+1) - 1") \
+  X(advance, "    x <- x + dx for every active edge; j <- j + 1, or the next table row if none is active") \
   X(done, "done")
   SW_LISTING("Scanline polygon fill", SW_FILL_SCANLINE_POLYGON)
 #undef SW_FILL_SCANLINE_POLYGON
@@ -47,7 +47,9 @@ template <class Num> struct TableEdge {
 };
 
 // A recorded list holds at most 64 entries: a longer active list shows its first 64.
-template <class T> std::span<const T> shown(const std::vector<T>& v) { return std::span<const T>(v).first(std::min<std::size_t>(v.size(), 64)); }
+template <class T> std::span<const T> shown(const std::vector<T>& v) {
+  return std::span<const T>(v).first(std::min<std::size_t>(v.size(), 64));
+}
 
 // Appends the covered pixels in scanline order.
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -68,7 +70,16 @@ void scanline_polygon(const Polygon<Num>& poly, std::vector<Pixel>& out, Probe& 
       const Num dx = (hi.x - lo.x) / (hi.y - lo.y);
       const std::int64_t row = num::ceil_int(lo.y);
       table.push_back({row, lo.x + (Num(row) - lo.y) * dx, dx, hi.y, p.y < q.y ? 1 : -1});
-      if constexpr (Probe::on) probe.step(L::bucket, StepKind::init).idx("row", row).num("x", table.back().x).num("dx", dx).num("y_high", hi.y).idx("dir", table.back().dir).segment(lo, hi).label(p.y < q.y ? "up" : "down").keep();
+      if constexpr (Probe::on)
+        probe.step(L::bucket, StepKind::init)
+            .idx("row", row)
+            .num("x", table.back().x)
+            .num("dx", dx)
+            .num("y_high", hi.y)
+            .idx("dir", table.back().dir)
+            .segment(lo, hi)
+            .label(p.y < q.y ? "up" : "down")
+            .keep();
     }
   }
   std::stable_sort(table.begin(), table.end(), [](const TableEdge<Num>& a, const TableEdge<Num>& b) { return a.row < b.row; });
@@ -90,7 +101,8 @@ void scanline_polygon(const Polygon<Num>& poly, std::vector<Pixel>& out, Probe& 
   for (const auto& e : table) last_row = std::max(last_row, num::ceil_int(e.y_high));
   for (std::int64_t pass = 0; pass <= last_row - table.front().row && (next < table.size() || !active.empty()); ++pass) {
     for (; next < table.size() && table[next].row == j; ++next) active.push_back(table[next]);
-    if constexpr (Probe::on) probe.step(L::add, StepKind::advance).idx("j", j).idx("active", static_cast<std::int64_t>(active.size()));
+    if constexpr (Probe::on)
+      probe.step(L::add, StepKind::advance).idx("j", j).idx("active", static_cast<std::int64_t>(active.size()));
     std::erase_if(active, [&](const TableEdge<Num>& e) { return !(Num(j) < e.y_high); });
     if constexpr (Probe::on) probe.step(L::drop, StepKind::advance).idx("active", static_cast<std::int64_t>(active.size()));
     std::stable_sort(active.begin(), active.end(), [](const TableEdge<Num>& a, const TableEdge<Num>& b) { return a.x < b.x; });
@@ -105,10 +117,12 @@ void scanline_polygon(const Polygon<Num>& poly, std::vector<Pixel>& out, Probe& 
       w += active[k].dir;
       const bool inside = poly.rule == WindingRule::nonzero ? w != 0 : w % 2 != 0;
       const std::int64_t i0 = num::ceil_int(active[k].x), i1 = num::ceil_int(active[k + 1].x) - 1;
-      if constexpr (Probe::on) probe.step(L::spans, StepKind::decide).idx("k", static_cast<std::int64_t>(k)).idx("w", w).idx("inside", inside);
+      if constexpr (Probe::on)
+        probe.step(L::spans, StepKind::decide).idx("k", static_cast<std::int64_t>(k)).idx("w", w).idx("inside", inside);
       if (!inside || i1 < i0) continue;
       for (std::int64_t i = i0; i <= i1; ++i) out.push_back({i, j});
-      if constexpr (Probe::on) probe.step(L::fill, StepKind::plot).num("x_l", active[k].x).num("x_r", active[k + 1].x).span(j, i0, i1);
+      if constexpr (Probe::on)
+        probe.step(L::fill, StepKind::plot).num("x_l", active[k].x).num("x_r", active[k + 1].x).span(j, i0, i1);
     }
     for (auto& e : active) e.x = e.x + e.dx;
     j = active.empty() && next < table.size() ? table[next].row : j + 1;

@@ -40,7 +40,8 @@ template <class Num> Num inner_side(const Num& o, const Vec2<Num>& a, const Vec2
 // orientation, at least three vertices; the caller checks). Returns the clipped polygon: empty, or
 // its vertices in the subject's orientation.
 template <NumberType Num, StepProbe Probe = NoProbe>
-std::vector<Vec2<Num>> sutherland_hodgman(const std::vector<Vec2<Num>>& subject, const std::vector<Vec2<Num>>& clip, Probe& probe) {
+std::vector<Vec2<Num>> sutherland_hodgman(const std::vector<Vec2<Num>>& subject, const std::vector<Vec2<Num>>& clip,
+                                          Probe& probe) {
   using L = SutherlandHodgman;
   const std::size_t m = clip.size();
   Num twice_area(0);
@@ -62,12 +63,14 @@ std::vector<Vec2<Num>> sutherland_hodgman(const std::vector<Vec2<Num>>& subject,
     const Vec2<Num>& b = clip[(k + 1) % m];
     std::swap(in, out);
     out.clear();
-    if constexpr (Probe::on) probe.step(L::edge, StepKind::advance).idx("k", static_cast<std::int64_t>(k)).segment(a, b).label("clip edge").replace();
+    if constexpr (Probe::on)
+      probe.step(L::edge, StepKind::advance).idx("k", static_cast<std::int64_t>(k)).segment(a, b).label("clip edge").replace();
     const Vec2<Num>* s = &in.back();
     Num d_s = inner_side(o, a, b, *s);
     for (const Vec2<Num>& p : in) {
       const Num d_p = inner_side(o, a, b, p);
-      if constexpr (Probe::on) probe.step(L::side, StepKind::decide).num("d_s", d_s).num("d_p", d_p).point(p).label("p").value(d_p);
+      if constexpr (Probe::on)
+        probe.step(L::side, StepKind::decide).num("d_s", d_s).num("d_p", d_p).point(p).label("p").value(d_p);
       if ((d_s < Num(0) && Num(0) < d_p) || (d_p < Num(0) && Num(0) < d_s)) {
         const Num t = d_s / (d_s - d_p);
         out.push_back(*s + t * (p - *s));
@@ -84,8 +87,12 @@ std::vector<Vec2<Num>> sutherland_hodgman(const std::vector<Vec2<Num>>& subject,
       return out;
     }
     if constexpr (Probe::on)
-      probe.step(L::clipped, StepKind::advance).idx("k", static_cast<std::int64_t>(k)).idx("n", static_cast<std::int64_t>(out.size()))
-          .geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(out)).label("clipped").replace();
+      probe.step(L::clipped, StepKind::advance)
+          .idx("k", static_cast<std::int64_t>(k))
+          .idx("n", static_cast<std::int64_t>(out.size()))
+          .geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(out))
+          .label("clipped")
+          .replace();
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("n", static_cast<std::int64_t>(out.size()));
   return out;

@@ -18,16 +18,16 @@ namespace sw::fill {
 struct TriangleEdge {
   static constexpr std::string_view id = "triangle-edge";
   static constexpr std::string_view summary = "Half-space triangle fill: three edge functions tested at every sample of the box";
-#define SW_FILL_TRIANGLE_EDGE(X)                                                                                   \
-  X(orient, "area2 <- (b - a) x (c - a); if area2 = 0: stop; if area2 < 0: swap b, c   -- counter-clockwise")      \
-  X(edges, "for each edge p -> q: E(s) = (q - p) x (s - p), dE/di = -(q_y - p_y), dE/dj = q_x - p_x")              \
-  X(ties, "    on_edge_inside <- q_y < p_y, or q_y = p_y and q_x > p_x   -- a left or a bottom edge")             \
-  X(box, "box <- the samples between the vertices' least and greatest x and y")                                   \
-  X(rows, "for each row j of the box:")                                                                            \
-  X(row_start, "    E_k <- E_k at the row's first sample, for k = 0, 1, 2")                                        \
-  X(cols, "    for each column i of the box:")                                                                     \
-  X(test, "        if every E_k > 0, or E_k = 0 and on_edge_inside_k: plot (i, j)")                               \
-  X(step, "        E_k <- E_k + dE_k/di                            -- one column right")                          \
+#define SW_FILL_TRIANGLE_EDGE(X) \
+  X(orient, "area2 <- (b - a) x (c - a); if area2 = 0: stop; if area2 < 0: swap b, c   -- counter-clockwise") \
+  X(edges, "for each edge p -> q: E(s) = (q - p) x (s - p), dE/di = -(q_y - p_y), dE/dj = q_x - p_x") \
+  X(ties, "    on_edge_inside <- q_y < p_y, or q_y = p_y and q_x > p_x   -- a left or a bottom edge") \
+  X(box, "box <- the samples between the vertices' least and greatest x and y") \
+  X(rows, "for each row j of the box:") \
+  X(row_start, "    E_k <- E_k at the row's first sample, for k = 0, 1, 2") \
+  X(cols, "    for each column i of the box:") \
+  X(test, "        if every E_k > 0, or E_k = 0 and on_edge_inside_k: plot (i, j)") \
+  X(step, "        E_k <- E_k + dE_k/di                            -- one column right") \
   X(done, "done")
   SW_LISTING("Half-space triangle fill", SW_FILL_TRIANGLE_EDGE)
 #undef SW_FILL_TRIANGLE_EDGE
@@ -45,12 +45,16 @@ inline constexpr const char* kEdgeNames[] = {"E0", "E1", "E2"};
 template <NumberType Num, StepProbe Probe = NoProbe>
 void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe) {
   using L = TriangleEdge;
-  Vec2<Num> &a = tri.v[0], &b = tri.v[1], &c = tri.v[2];
+  Vec2<Num>&a = tri.v[0], &b = tri.v[1], &c = tri.v[2];
   const Num area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (area2 < Num(0)) std::swap(b, c);
   if constexpr (Probe::on) {
     const std::array<Vec2<Num>, 3> corners{a, b, c};
-    probe.step(L::orient, StepKind::decide).num("area2", area2).idx("swapped", area2 < Num(0)).geo_list(GeoKind::polygon, std::span(corners)).keep();
+    probe.step(L::orient, StepKind::decide)
+        .num("area2", area2)
+        .idx("swapped", area2 < Num(0))
+        .geo_list(GeoKind::polygon, std::span(corners))
+        .keep();
   }
   if (area2 == Num(0)) {
     if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("pixels", 0);
@@ -65,7 +69,13 @@ void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe)
     dj[k] = (q.x - p.x) * tri.unit;
     tie_inside[k] = q.y < p.y || (q.y == p.y && p.x < q.x);
     if constexpr (Probe::on) {
-      probe.step(L::edges, StepKind::init).idx("k", k).num("dE_di", di[k]).num("dE_dj", dj[k]).segment(p, q).label(kEdgeNames[k]).keep();
+      probe.step(L::edges, StepKind::init)
+          .idx("k", k)
+          .num("dE_di", di[k])
+          .num("dE_dj", dj[k])
+          .segment(p, q)
+          .label(kEdgeNames[k])
+          .keep();
       probe.step(L::ties, StepKind::decide).idx("k", k).idx("on_edge_inside", tie_inside[k]);
     }
   }
@@ -82,13 +92,20 @@ void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe)
       const Vec2<Num>& q = tri.v[(k + 1) % 3];
       e[k] = (q.x - p.x) * (Num(j) * tri.unit - p.y) - (q.y - p.y) * (Num(i0) * tri.unit - p.x);
     }
-    if constexpr (Probe::on) probe.step(L::row_start, StepKind::advance).idx("j", j).num("E0", e[0]).num("E1", e[1]).num("E2", e[2]);
+    if constexpr (Probe::on)
+      probe.step(L::row_start, StepKind::advance).idx("j", j).num("E0", e[0]).num("E1", e[1]).num("E2", e[2]);
     for (std::int64_t i = i0; i <= i1; ++i) {
       bool inside = true;
       for (int k = 0; k < 3; ++k) inside = inside && (Num(0) < e[k] || (e[k] == Num(0) && tie_inside[k]));
       if (inside) out.push_back({i, j});
       if constexpr (Probe::on) {
-        auto& s = probe.step(L::test, inside ? StepKind::plot : StepKind::decide).idx("i", i).idx("j", j).num("E0", e[0]).num("E1", e[1]).num("E2", e[2]).idx("inside", inside);
+        auto& s = probe.step(L::test, inside ? StepKind::plot : StepKind::decide)
+                      .idx("i", i)
+                      .idx("j", j)
+                      .num("E0", e[0])
+                      .num("E1", e[1])
+                      .num("E2", e[2])
+                      .idx("inside", inside);
         if (inside) s.pixel(Pixel{i, j});
       }
       for (int k = 0; k < 3; ++k) e[k] = e[k] + di[k];

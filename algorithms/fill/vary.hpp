@@ -18,10 +18,18 @@ template <class Num> struct Vary {
   std::size_t n = 0;  // values in use
 
   std::span<const Num> attrs() const { return {a.data(), n}; }
-  friend Vary operator+(const Vary& u, const Vary& v) { return zip(u, v, [](const Num& x, const Num& y) { return x + y; }); }
-  friend Vary operator-(const Vary& u, const Vary& v) { return zip(u, v, [](const Num& x, const Num& y) { return x - y; }); }
-  friend Vary operator*(const Num& s, const Vary& v) { return zip(v, v, [&](const Num& x, const Num&) { return s * x; }); }
-  friend Vary operator/(const Vary& v, const Num& s) { return zip(v, v, [&](const Num& x, const Num&) { return x / s; }); }
+  friend Vary operator+(const Vary& u, const Vary& v) {
+    return zip(u, v, [](const Num& x, const Num& y) { return x + y; });
+  }
+  friend Vary operator-(const Vary& u, const Vary& v) {
+    return zip(u, v, [](const Num& x, const Num& y) { return x - y; });
+  }
+  friend Vary operator*(const Num& s, const Vary& v) {
+    return zip(v, v, [&](const Num& x, const Num&) { return s * x; });
+  }
+  friend Vary operator/(const Vary& v, const Num& s) {
+    return zip(v, v, [&](const Num& x, const Num&) { return x / s; });
+  }
 
  private:
   template <class F> static Vary zip(const Vary& u, const Vary& v, F f) {

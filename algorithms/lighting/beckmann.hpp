@@ -11,7 +11,8 @@
 namespace sw::lighting {
 
 // The distribution's line, shared with cook-torrance.
-#define SW_LIGHTING_BECKMANN_LINE(X) X(distribution, "t2 <- (1 - c^2)/c^2; D <- exp(-t2/m^2) / (pi m^2 c^4)   -- t2 = tan^2(alpha)")
+#define SW_LIGHTING_BECKMANN_LINE(X) \
+  X(distribution, "t2 <- (1 - c^2)/c^2; D <- exp(-t2/m^2) / (pi m^2 c^4)   -- t2 = tan^2(alpha)")
 
 struct Beckmann {
   static constexpr std::string_view id = "beckmann";

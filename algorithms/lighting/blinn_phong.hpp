@@ -24,7 +24,8 @@ struct BlinnPhong {
 template <class L, NumberType Num, StepProbe Probe> Vec3<Num> half_step(const Frame<Num>& f, Num& c, Probe& probe) {
   const Vec3<Num> h = half_vector(f);
   c = dot(f.n, h);
-  if constexpr (Probe::on) probe.step(L::half, StepKind::advance).vec("h", h).num("c", c).segment(Vec3<Num>{}, h).label("h").keep();
+  if constexpr (Probe::on)
+    probe.step(L::half, StepKind::advance).vec("h", h).num("c", c).segment(Vec3<Num>{}, h).label("h").keep();
   return h;
 }
 

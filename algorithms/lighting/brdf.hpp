@@ -41,15 +41,15 @@ struct ModelChoice {
 
 // Every model's parameters (each model reads its own; the runtime checks their ranges).
 template <class Num> struct ModelParams {
-  Num minnaert_k{1};        // minnaert: k in [0, 1]; k = 1 is Lambert
-  Num sigma{0};             // oren-nayar: roughness sigma in [0, 1] (radians); 0 is Lambert
-  std::optional<Num> toon;  // toon: a cutoff on the diffuse term (any model), if set
+  Num minnaert_k{1};               // minnaert: k in [0, 1]; k = 1 is Lambert
+  Num sigma{0};                    // oren-nayar: roughness sigma in [0, 1] (radians); 0 is Lambert
+  std::optional<Num> toon;         // toon: a cutoff on the diffuse term (any model), if set
   std::optional<bool> toon_above;  // toon: the decision d >= cutoff made exactly beforehand (else on the value)
-  Num shininess{1};         // phong, blinn-phong: n >= 0
-  Num m{Num(0.3)};          // gaussian, beckmann, cook-torrance, ward: the slope roughness m > 0
-  Num ior{Num(1.5)};        // cook-torrance: the relative index of refraction, >= 1 (no total internal reflection)
+  Num shininess{1};                // phong, blinn-phong: n >= 0
+  Num m{Num(0.3)};                 // gaussian, beckmann, cook-torrance, ward: the slope roughness m > 0
+  Num ior{Num(1.5)};               // cook-torrance: the relative index of refraction, >= 1 (no total internal reflection)
   Fresnel fresnel = Fresnel::exact;
-  bool shadowing = true;    // cook-torrance: the geometric attenuation G (false: G = 1, the limit test)
+  bool shadowing = true;  // cook-torrance: the geometric attenuation G (false: G = 1, the limit test)
 };
 
 // The dispatchers (defined in models.hpp, which includes every model): the diffuse and the

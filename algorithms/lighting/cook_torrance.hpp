@@ -12,7 +12,8 @@ namespace sw::lighting {
 
 struct CookTorrance {
   static constexpr std::string_view id = "cook-torrance";
-  static constexpr std::string_view summary = "Cook-Torrance microfacet term pi D F G/(4 n.e) (Beckmann D, Fresnel, V-groove G), one light";
+  static constexpr std::string_view summary =
+      "Cook-Torrance microfacet term pi D F G/(4 n.e) (Beckmann D, Fresnel, V-groove G), one light";
 #define SW_LIGHTING_COOK_TORRANCE(X) \
   SW_LIGHTING_FRAME_LINES(X) \
   SW_LIGHTING_HALF_LINE(X) \

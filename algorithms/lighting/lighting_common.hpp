@@ -27,10 +27,12 @@ template <class Num> int sign_dot(const Vec3<Num>& a, const Vec3<Num>& b) {
 
 // sign(2 (N.L)(N.E) - (N.N)(L.E)): |N|^2 |L| |E| times r.e, with r the mirror of l about n.
 template <class Num> int sign_mirror(const Vec3<Num>& n, const Vec3<Num>& l, const Vec3<Num>& e) {
-  return num::exact_sign([](const auto& N, const auto& L, const auto& E) {
-    using T = std::decay_t<decltype(N.x)>;
-    return T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E);
-  }, n, l, e);
+  return num::exact_sign(
+      [](const auto& N, const auto& L, const auto& E) {
+        using T = std::decay_t<decltype(N.x)>;
+        return T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E);
+      },
+      n, l, e);
 }
 
 // v / |v| (v != 0; a float v whose square underflows gives Inf or NaN components: a float failure
@@ -55,14 +57,27 @@ Frame<Num> shading_frame(const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num
   f.n = unit(N), f.l = unit(Lv), f.e = unit(E);
   if constexpr (Probe::on) {
     const Vec3<Num> o{};
-    probe.step(L::normalise, StepKind::init).vec("n", f.n).vec("l", f.l).vec("e", f.e)
-        .segment(o, f.n).label("n").keep().segment(o, f.l).label("l").keep().segment(o, f.e).label("e").keep()
-        .plane(o, f.n).keep();  // the surface's tangent plane, for the 3D view
+    probe.step(L::normalise, StepKind::init)
+        .vec("n", f.n)
+        .vec("l", f.l)
+        .vec("e", f.e)
+        .segment(o, f.n)
+        .label("n")
+        .keep()
+        .segment(o, f.l)
+        .label("l")
+        .keep()
+        .segment(o, f.e)
+        .label("e")
+        .keep()
+        .plane(o, f.n)
+        .keep();  // the surface's tangent plane, for the 3D view
   }
   const FrameSigns s = given ? *given : frame_signs(N, Lv, E);
   f.lit = s.lit, f.seen = s.seen, f.mirror = s.mirror;
   f.nl = dot(f.n, f.l), f.ne = dot(f.n, f.e);
-  if constexpr (Probe::on) probe.step(L::horizon, StepKind::decide).idx("lit", f.lit).idx("seen", f.seen).num("nl", f.nl).num("ne", f.ne);
+  if constexpr (Probe::on)
+    probe.step(L::horizon, StepKind::decide).idx("lit", f.lit).idx("seen", f.seen).num("nl", f.nl).num("ne", f.ne);
   return f;
 }
 

@@ -28,10 +28,10 @@ template <class Num> struct SpotCone {
 
 template <class Num> struct Light {
   LightType type = LightType::point;
-  Vec3<Num> where;         // point, spot: the position; directional: the direction towards the light
-  Vec3<Num> spot_dir;      // spot: the axis of the cone, pointing away from the light
-  SpotCone<Num> cone;      // spot only
-  Num k0{1}, k1{0}, k2{0}; // attenuation 1/(k0 + k1 d + k2 d^2); all >= 0, not all 0
+  Vec3<Num> where;          // point, spot: the position; directional: the direction towards the light
+  Vec3<Num> spot_dir;       // spot: the axis of the cone, pointing away from the light
+  SpotCone<Num> cone;       // spot only
+  Num k0{1}, k1{0}, k2{0};  // attenuation 1/(k0 + k1 d + k2 d^2); all >= 0, not all 0
   Vec3<Num> ambient, diffuse, specular;
 };
 

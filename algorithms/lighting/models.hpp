@@ -13,7 +13,8 @@
 
 namespace sw::lighting {
 
-template <NumberType Num, StepProbe Probe> Num diffuse_term(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
+template <NumberType Num, StepProbe Probe>
+Num diffuse_term(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   if (!(f.lit && f.seen)) return Num(0);
   if (!p.toon) return diffuse_nested(m, f, p, probe);
   const auto call = nested<Toon>(probe);
@@ -21,7 +22,8 @@ template <NumberType Num, StepProbe Probe> Num diffuse_term(DiffuseModel m, cons
 }
 
 // The specular model's term on a lit and seen frame, on the model's listing (not entered).
-template <NumberType Num, StepProbe Probe> Num specular_plain(SpecularModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
+template <NumberType Num, StepProbe Probe>
+Num specular_plain(SpecularModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   switch (m) {
     case SpecularModel::none: return Num(0);
     case SpecularModel::phong: return phong_term(f, p, probe);
@@ -34,7 +36,8 @@ template <NumberType Num, StepProbe Probe> Num specular_plain(SpecularModel m, c
   return Num(0);
 }
 
-template <NumberType Num, StepProbe Probe> Num specular_term(SpecularModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
+template <NumberType Num, StepProbe Probe>
+Num specular_term(SpecularModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   if (!(f.lit && f.seen) || m == SpecularModel::none) return Num(0);
   auto run = [&]<class Algo>(std::type_identity<Algo>) -> Num {
     const auto call = nested<Algo>(probe);
@@ -77,8 +80,8 @@ inline std::string_view model_name(SpecularModel m) {
 // (the diffuse model inside toon runs nested). `given`: the decisions made on the exact input;
 // frame_out, if set, receives the frame.
 template <class L, NumberType Num, StepProbe Probe>
-Num evaluate(const ModelChoice& c, const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num>& E, const ModelParams<Num>& p, Probe& probe,
-             const std::optional<FrameSigns>& given = std::nullopt, Frame<Num>* frame_out = nullptr) {
+Num evaluate(const ModelChoice& c, const Vec3<Num>& N, const Vec3<Num>& Lv, const Vec3<Num>& E, const ModelParams<Num>& p,
+             Probe& probe, const std::optional<FrameSigns>& given = std::nullopt, Frame<Num>* frame_out = nullptr) {
   const Frame<Num> f = shading_frame<L>(N, Lv, E, probe, given);
   if (frame_out) *frame_out = f;
   return frame_term<L>(f, probe, [&]() -> Num {

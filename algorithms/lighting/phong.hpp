@@ -23,7 +23,8 @@ struct Phong {
 template <NumberType Num, StepProbe Probe> Num phong_term(const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   const Vec3<Num> r = mirror_of(f);
   const Num c = dot(r, f.e);
-  if constexpr (Probe::on) probe.step(Phong::reflect, StepKind::advance).vec("r", r).num("c", c).segment(Vec3<Num>{}, r).label("r").keep();
+  if constexpr (Probe::on)
+    probe.step(Phong::reflect, StepKind::advance).vec("r", r).num("c", c).segment(Vec3<Num>{}, r).label("r").keep();
   const bool front = f.mirror ? *f.mirror : Num(0) < c;
   if (!front) {
     if constexpr (Probe::on) probe.step(Phong::side, StepKind::done).idx("front", 0).num("s", Num(0));

@@ -38,7 +38,7 @@ template <class Num> struct ShadeScene {
   std::vector<Light<Num>> lights;
   Material<Num> material;
   Convention convention = Convention::gl;
-  std::uint32_t blocked = 0;     // bit i: a shadow ray found light i occluded (the ray tracer): no diffuse or specular from it
+  std::uint32_t blocked = 0;  // bit i: a shadow ray found light i occluded (the ray tracer): no diffuse or specular from it
 };
 
 template <class Num> struct LightTerms {
@@ -47,7 +47,7 @@ template <class Num> struct LightTerms {
   bool blocked = false;   // occluded (ShadeScene::blocked): lit, but only its ambient term is added
   bool inside = true;     // inside the spot cone (always, for other lights)
   Num attenuation{0}, spot{0}, diffuse{0}, specular{0};
-  Vec3<Num> rgb;          // what the light adds
+  Vec3<Num> rgb;  // what the light adds
 };
 
 template <class Num> struct Shaded {
@@ -58,22 +58,25 @@ template <class Num> struct Shaded {
 
 struct Shade {
   static constexpr std::string_view id = "shade";
-  static constexpr std::string_view summary = "Full local lighting: ambient + lights x (diffuse + specular), point/directional/spot, attenuation";
-#define SW_LIGHTING_SHADE(X)                                                                                         \
-  X(normal, "n <- (N/m)/|N/m|, m = max |N_k|                          -- N as given, any length")                    \
-  X(view, "e <- (E - P)/|E - P|, or E/|E| for an eye at infinity; facing <- N.(E - P) > 0 (or N.E > 0)")             \
-  X(ambient, "c <- emission + ambient_scene ka")                                                                    \
-  X(lights, "for each light i:")                                                                                    \
-  X(to_light, "    L <- position - P (point, spot), or the direction (directional)")                                \
-  X(at_point, "    if L = 0: the light sits at P: it adds nothing; next light")                                      \
+  static constexpr std::string_view summary =
+      "Full local lighting: ambient + lights x (diffuse + specular), point/directional/spot, attenuation";
+#define SW_LIGHTING_SHADE(X) \
+  X(normal, "n <- (N/m)/|N/m|, m = max |N_k|                          -- N as given, any length") \
+  X(view, "e <- (E - P)/|E - P|, or E/|E| for an eye at infinity; facing <- N.(E - P) > 0 (or N.E > 0)") \
+  X(ambient, "c <- emission + ambient_scene ka") \
+  X(lights, "for each light i:") \
+  X(to_light, "    L <- position - P (point, spot), or the direction (directional)") \
+  X(at_point, "    if L = 0: the light sits at P: it adds nothing; next light") \
   X(facing, "    lit <- N.L > 0                                        -- the raw vectors: exact in reference mode") \
   X(blocked, "    if a shadow ray found light i occluded: diff <- 0, spec <- 0 (it adds its ambient term only)") \
-  X(unit, "    m <- max |L_k|; d <- m |L/m|; l <- (L/m)/|L/m|          -- no overflow or underflow")                                                                                 \
-  X(atten, "    att <- 1/(k0 + k1 d + k2 d^2)   (directional: 1)")                                                   \
-  X(cone, "    spot: D <- -L/m, S <- S/max|S_k|; inside <- D.S >= 0 and (D.S)^2 >= cos^2(cut-off) |D|^2 |S|^2; spot <- inside ? (D.S/(|D||S|))^exponent : 0") \
-  X(diffuse, "    diff <- lit ? (gl: max(n.l, 0); models: the diffuse model if facing) : 0")                         \
-  X(specular, "    spec <- lit ? (gl: h <- l + e; max(n.h/|h|, 0)^s, 0^0 = 1; models: the specular model if facing) : 0")     \
-  X(add, "    c <- c + att spot (Ia ka + diff Id kd + spec Is ks)")                                                 \
+  X(unit, "    m <- max |L_k|; d <- m |L/m|; l <- (L/m)/|L/m|          -- no overflow or underflow") \
+  X(atten, "    att <- 1/(k0 + k1 d + k2 d^2)   (directional: 1)") \
+  X(cone, \
+    "    spot: D <- -L/m, S <- S/max|S_k|; inside <- D.S >= 0 and (D.S)^2 >= cos^2(cut-off) |D|^2 |S|^2; spot <- inside ? " \
+    "(D.S/(|D||S|))^exponent : 0") \
+  X(diffuse, "    diff <- lit ? (gl: max(n.l, 0); models: the diffuse model if facing) : 0") \
+  X(specular, "    spec <- lit ? (gl: h <- l + e; max(n.h/|h|, 0)^s, 0^0 = 1; models: the specular model if facing) : 0") \
+  X(add, "    c <- c + att spot (Ia ka + diff Id kd + spec Is ks)") \
   X(done, "rgb <- c                                                  -- not clamped")
   SW_LISTING("Full local lighting model", SW_LIGHTING_SHADE)
 #undef SW_LIGHTING_SHADE
@@ -98,12 +101,25 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
   Shaded<Num> out;
   const Vec3<Num> n = unit(prescaled(s.n));
   if constexpr (Probe::on)
-    probe.step(L::normal, StepKind::init).vec("N", s.n).vec("n", n).point(s.p).label("P").keep().segment(s.p, Vec3<Num>(s.p + n)).label("n").keep();
+    probe.step(L::normal, StepKind::init)
+        .vec("N", s.n)
+        .vec("n", n)
+        .point(s.p)
+        .label("P")
+        .keep()
+        .segment(s.p, Vec3<Num>(s.p + n))
+        .label("n")
+        .keep();
   const Vec3<Num> to_eye = s.eye_at_infinity ? s.eye : Vec3<Num>(s.eye - s.p);
   const Vec3<Num> e = unit(prescaled(to_eye));
   out.facing_eye = sign_dot(s.n, to_eye) > 0;
   if constexpr (Probe::on) {
-    auto& st = probe.step(L::view, StepKind::decide).vec("e", e).idx("facing", out.facing_eye).segment(s.p, Vec3<Num>(s.p + e)).label("e").keep();
+    auto& st = probe.step(L::view, StepKind::decide)
+                   .vec("e", e)
+                   .idx("facing", out.facing_eye)
+                   .segment(s.p, Vec3<Num>(s.p + e))
+                   .label("e")
+                   .keep();
     if (!s.eye_at_infinity) st.point(s.eye).label("eye").keep();
   }
   out.ambient = m.emission + times(s.scene_ambient, m.ka);
@@ -113,7 +129,8 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
     const Light<Num>& li = s.lights[i];
     LightTerms<Num> t;
     const bool positional = li.type != LightType::directional;
-    if constexpr (Probe::on) probe.step(L::lights, StepKind::advance).idx("i", std::int64_t(i)).idx("type", std::int64_t(li.type));
+    if constexpr (Probe::on)
+      probe.step(L::lights, StepKind::advance).idx("i", std::int64_t(i)).idx("type", std::int64_t(li.type));
     const Vec3<Num> to_light = positional ? Vec3<Num>(li.where - s.p) : li.where;
     if constexpr (Probe::on) {
       auto& st = probe.step(L::to_light, StepKind::init).vec("L", to_light);
@@ -130,7 +147,8 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
     t.lit = sign_dot(s.n, to_light) > 0;
     if constexpr (Probe::on) probe.step(L::facing, StepKind::decide).num("NL", dot(s.n, to_light)).idx("lit", t.lit);
     t.blocked = (s.blocked >> i) & 1u;
-    if constexpr (Probe::on) if (t.blocked && t.lit) probe.step(L::blocked, StepKind::miss).idx("i", std::int64_t(i));
+    if constexpr (Probe::on)
+      if (t.blocked && t.lit) probe.step(L::blocked, StepKind::miss).idx("i", std::int64_t(i));
     const Num scale = max_abs(to_light);
     const Vec3<Num> lm = prescaled(to_light);
     const Num dm = num::sqrt_of(dot(lm, lm)), d = scale * dm, d2 = d * d;
@@ -145,8 +163,13 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
       t.inside = cone_contains(ds, q, li.cone);
       t.spot = t.inside ? num::pow(ds / num::sqrt_of(q), li.cone.exponent) : Num(0);
       if constexpr (Probe::on)
-        probe.step(L::cone, StepKind::decide).num("DS", ds).num("q", q).idx("inside", t.inside).num("spot", t.spot)
-            .ray(li.where, li.spot_dir).label("S");
+        probe.step(L::cone, StepKind::decide)
+            .num("DS", ds)
+            .num("q", q)
+            .idx("inside", t.inside)
+            .num("spot", t.spot)
+            .ray(li.where, li.spot_dir)
+            .label("S");
     }
     if (t.lit && !t.blocked) {
       const FrameSigns sg = frame_signs(s.n, to_light, to_eye);

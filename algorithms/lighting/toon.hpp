@@ -22,21 +22,24 @@ struct Toon {
 };
 
 // The diffuse model's term inside its own nested listing (needs lit and seen).
-template <NumberType Num, StepProbe Probe> Num diffuse_nested(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
+template <NumberType Num, StepProbe Probe>
+Num diffuse_nested(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   auto run = [&]<class Algo>(std::type_identity<Algo>, auto term) -> Num {
     const auto call = nested<Algo>(probe);
     return term();
   };
   switch (m) {
     case DiffuseModel::minnaert: return run(std::type_identity<Minnaert>{}, [&]() -> Num { return minnaert_term(f, p, probe); });
-    case DiffuseModel::oren_nayar: return run(std::type_identity<OrenNayar>{}, [&]() -> Num { return oren_nayar_term(f, p, probe); });
+    case DiffuseModel::oren_nayar:
+      return run(std::type_identity<OrenNayar>{}, [&]() -> Num { return oren_nayar_term(f, p, probe); });
     case DiffuseModel::lambert: break;
   }
   return run(std::type_identity<Lambert>{}, [&]() -> Num { return lambert_term(f, p, probe); });
 }
 
 // The toon term on a lit and seen frame: the nested diffuse term, then the cut. Needs p.toon.
-template <NumberType Num, StepProbe Probe> Num toon_term(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
+template <NumberType Num, StepProbe Probe>
+Num toon_term(DiffuseModel m, const Frame<Num>& f, const ModelParams<Num>& p, Probe& probe) {
   const Num d = diffuse_nested(m, f, p, probe);
   if constexpr (Probe::on) probe.step(Toon::diffuse, StepKind::advance).num("d", d);
   const bool above = p.toon_above ? *p.toon_above : !(d < *p.toon);

@@ -57,7 +57,12 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
     t_max[a] = (Num(c) + Num(step[a] * 0.5) - p0[a]) / d[a];
     bound += num::floor_int(num::abs(d[a])) + 2;
   }
-  if constexpr (Probe::on) probe.step(L::setup, StepKind::init).idx("step_x", step[0]).idx("step_y", step[1]).num("tDelta_x", t_delta[0]).num("tDelta_y", t_delta[1]);
+  if constexpr (Probe::on)
+    probe.step(L::setup, StepKind::init)
+        .idx("step_x", step[0])
+        .idx("step_y", step[1])
+        .num("tDelta_x", t_delta[0])
+        .num("tDelta_y", t_delta[1]);
   if constexpr (Probe::on) probe.step(L::first_exit, StepKind::init).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]);
   for (std::int64_t n = 0; n < bound; ++n) {
     // Which axes leave the cell first: x, y or both at once (a corner). Comparisons only, so a
@@ -66,12 +71,14 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
     const bool y_first = !x_first && (step[0] == 0 || t_max[1] < t_max[0]);
     const bool hit[2] = {!y_first, !x_first};
     const Num t = hit[0] ? t_max[0] : t_max[1];
-    if constexpr (Probe::on) probe.step(L::pick, StepKind::decide).num("t", t).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]).point(p0 + t * d);
+    if constexpr (Probe::on)
+      probe.step(L::pick, StepKind::decide).num("t", t).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]).point(p0 + t * d);
     const bool past = (hit[0] && step[0] != 0 && (cell.x + step[0] - last.x) * step[0] > 0) ||
                       (hit[1] && step[1] != 0 && (cell.y + step[1] - last.y) * step[1] > 0);
     const bool reached = !(t < Num(1));
     if (reached || past) {
-      if constexpr (Probe::on) probe.step(L::test, StepKind::done).num("t", t).idx("past_p1", !reached);  // 1: the range guard stopped it
+      if constexpr (Probe::on)
+        probe.step(L::test, StepKind::done).num("t", t).idx("past_p1", !reached);  // 1: the range guard stopped it
       return true;
     }
     for (int dir : {1, -1}) {
@@ -84,7 +91,13 @@ bool dda_grid_walk(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& p
       }
       if (!moved) continue;
       out.push_back(cell);
-      if constexpr (Probe::on) probe.step(dir > 0 ? L::visit_up : L::visit_down, StepKind::visit).idx("i", cell.x).idx("j", cell.y).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]).pixel(cell);
+      if constexpr (Probe::on)
+        probe.step(dir > 0 ? L::visit_up : L::visit_down, StepKind::visit)
+            .idx("i", cell.x)
+            .idx("j", cell.y)
+            .num("tMax_x", t_max[0])
+            .num("tMax_y", t_max[1])
+            .pixel(cell);
     }
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("bound_hit", 1);

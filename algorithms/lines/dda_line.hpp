@@ -54,7 +54,14 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
   const Num first = Num(num::ceil_int(p0[a]));
   const Num offset = first - p0[a];
   Vec2<Num> q = p0 + offset * dp;
-  if constexpr (Probe::on) probe.step(L::offset, StepKind::init).num("dp0x", offset * dp.x).num("dp0y", offset * dp.y).num("qx", q.x).num("qy", q.y).point(q).label("q");
+  if constexpr (Probe::on)
+    probe.step(L::offset, StepKind::init)
+        .num("dp0x", offset * dp.x)
+        .num("dp0y", offset * dp.y)
+        .num("qx", q.x)
+        .num("qy", q.y)
+        .point(q)
+        .label("q");
   // Columns in [p0_a, p1_a): ceil(p1_a) - ceil(p0_a) of them; one more pass detects a stall.
   const std::int64_t bound = num::ceil_int(p1[a]) - num::ceil_int(p0[a]) + 1;
   for (std::int64_t n = 0; n < bound; ++n) {
@@ -64,7 +71,15 @@ bool dda_line(Vec2<Num> p0, Vec2<Num> p1, std::vector<Pixel>& out, Probe& probe)
     }
     const Pixel px{num::floor_int(q.x + Num(0.5)), num::floor_int(q.y + Num(0.5))};
     out.push_back(px);
-    if constexpr (Probe::on) probe.step(L::plot, StepKind::plot).num("qx", q.x).num("qy", q.y).idx("i", px.x).idx("j", px.y).pixel(px).point(q).label("q");
+    if constexpr (Probe::on)
+      probe.step(L::plot, StepKind::plot)
+          .num("qx", q.x)
+          .num("qy", q.y)
+          .idx("i", px.x)
+          .idx("j", px.y)
+          .pixel(px)
+          .point(q)
+          .label("q");
     q = q + dp;
     if constexpr (Probe::on) probe.step(L::advance, StepKind::advance).num("qx", q.x).num("qy", q.y).point(q).label("q");
   }

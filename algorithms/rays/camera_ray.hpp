@@ -57,10 +57,28 @@ CameraRay<Num> camera_ray_at(const Camera<Num>& c, std::int64_t i, std::int64_t 
   auto unit = [](const Vec3<Num>& a) { return (Num(1) / num::sqrt_of(dot(a, a))) * a; };
   const Vec3<Num> n = unit(c.vpn), u = unit(cross(c.vup, n)), v = cross(n, u);
   if constexpr (Probe::on)
-    probe.step(L::frame, StepKind::init).num("ux", u.x).num("uy", u.y).num("uz", u.z).num("vx", v.x).num("vy", v.y).num("vz", v.z)
-        .num("nx", n.x).num("ny", n.y).num("nz", n.z).point(c.eye).label("eye").keep()
-        .segment(c.eye, Vec3<Num>(c.eye + u)).label("u").keep().segment(c.eye, Vec3<Num>(c.eye + v)).label("v").keep()
-        .segment(c.eye, Vec3<Num>(c.eye + n)).label("n").keep();
+    probe.step(L::frame, StepKind::init)
+        .num("ux", u.x)
+        .num("uy", u.y)
+        .num("uz", u.z)
+        .num("vx", v.x)
+        .num("vy", v.y)
+        .num("vz", v.z)
+        .num("nx", n.x)
+        .num("ny", n.y)
+        .num("nz", n.z)
+        .point(c.eye)
+        .label("eye")
+        .keep()
+        .segment(c.eye, Vec3<Num>(c.eye + u))
+        .label("u")
+        .keep()
+        .segment(c.eye, Vec3<Num>(c.eye + v))
+        .label("v")
+        .keep()
+        .segment(c.eye, Vec3<Num>(c.eye + n))
+        .label("n")
+        .keep();
   const Num w = Num(double(c.width)), h = Num(double(c.height)), half(0.5);
   // Adding an offset of 0 is exact: the centre's sx, sy are those of the formula without it.
   const Num sx = Num(2) * (Num(double(i)) + half + di) / w - Num(1), sy = Num(1) - Num(2) * (Num(double(j)) + half + dj) / h;
@@ -98,11 +116,13 @@ CameraRay<Num> camera_ray_at(const Camera<Num>& c, std::int64_t i, std::int64_t 
   }
   out.valid = true;
   out.ray = {c.eye, dir};
-  if constexpr (Probe::on) probe.step(L::ray, StepKind::done).num("dx", dir.x).num("dy", dir.y).num("dz", dir.z).ray(c.eye, dir).label("ray").keep();
+  if constexpr (Probe::on)
+    probe.step(L::ray, StepKind::done).num("dx", dir.x).num("dy", dir.y).num("dz", dir.z).ray(c.eye, dir).label("ray").keep();
   return out;
 }
 
-template <NumberType Num, StepProbe Probe = NoProbe> CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe>
+CameraRay<Num> camera_ray(const Camera<Num>& c, std::int64_t i, std::int64_t j, Probe& probe) {
   return camera_ray_at(c, i, j, Num(0), Num(0), probe);
 }
 

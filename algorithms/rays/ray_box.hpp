@@ -32,15 +32,15 @@ struct RayBox {
   SW_LISTING("Slab test", SW_LINES_RAY_BOX)
 #undef SW_LINES_RAY_BOX
   // The algorithm itself, callable as RayBox{}(...): ray_box below.
-  template <NumberType Num, StepProbe Probe> BoxHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  BoxHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
 [[gnu::always_inline]] inline BoxHit<Num> ray_box(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) {
   using L = RayBox;
   BoxHit<Num> out;
-  if constexpr (Probe::on)
-    probe.step(L::init, StepKind::init).ray(r.o, r.d).keep().box(lo, hi).keep();
+  if constexpr (Probe::on) probe.step(L::init, StepKind::init).ray(r.o, r.d).keep().box(lo, hi).keep();
   bool bounded = false;  // false while t_near and t_far are still -inf and +inf
   Num tn{}, tf{};
 #pragma GCC unroll 3
@@ -69,9 +69,19 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     }
     if constexpr (Probe::on) {
       static constexpr const char* slab[3] = {"x slab", "y slab", "z slab"};
-      probe.step(L::clip, StepKind::advance).idx("k", k).num("t1", t1).num("t2", t2).num("t_near", tn).num("t_far", tf)
-          .segment(Vec3<Num>(r.o + t1 * r.d), Vec3<Num>(r.o + t2 * r.d)).label(slab[k]).keep()
-          .segment(Vec3<Num>(r.o + tn * r.d), Vec3<Num>(r.o + tf * r.d)).label("[t_near, t_far]").value(tf - tn).replace();
+      probe.step(L::clip, StepKind::advance)
+          .idx("k", k)
+          .num("t1", t1)
+          .num("t2", t2)
+          .num("t_near", tn)
+          .num("t_far", tf)
+          .segment(Vec3<Num>(r.o + t1 * r.d), Vec3<Num>(r.o + t2 * r.d))
+          .label(slab[k])
+          .keep()
+          .segment(Vec3<Num>(r.o + tn * r.d), Vec3<Num>(r.o + tf * r.d))
+          .label("[t_near, t_far]")
+          .value(tf - tn)
+          .replace();
     }
   }
   // d != 0, so some axis bounded the interval.
@@ -89,7 +99,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline BoxHit<Num> RayBox::operator()(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi, Probe& probe) const {
+[[gnu::always_inline]] inline BoxHit<Num> RayBox::operator()(const Ray3<Num>& r, const Vec3<Num>& lo, const Vec3<Num>& hi,
+                                                             Probe& probe) const {
   return ray_box<Num>(r, lo, hi, probe);
 }
 

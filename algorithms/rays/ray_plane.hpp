@@ -25,7 +25,8 @@ struct RayPlane {
   SW_LISTING("Ray-plane", SW_LINES_RAY_PLANE)
 #undef SW_LINES_RAY_PLANE
   // The algorithm itself, callable as RayPlane{}(...): ray_plane below.
-  template <NumberType Num, StepProbe Probe> PlaneHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  PlaneHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
@@ -33,8 +34,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   using L = RayPlane;
   PlaneHit<Num> out;
   const Num den = dot(n, r.d);
-  if constexpr (Probe::on)
-    probe.step(L::denom, StepKind::decide).num("den", den).ray(r.o, r.d).keep().plane(p, n).keep();
+  if constexpr (Probe::on) probe.step(L::denom, StepKind::decide).num("den", den).ray(r.o, r.d).keep().plane(p, n).keep();
   const int den_sign = num::sign(den);
   if (den_sign == 0) {
     if constexpr (Probe::on) probe.step(L::parallel, StepKind::miss);
@@ -53,7 +53,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline PlaneHit<Num> RayPlane::operator()(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n, Probe& probe) const {
+[[gnu::always_inline]] inline PlaneHit<Num> RayPlane::operator()(const Ray3<Num>& r, const Vec3<Num>& p, const Vec3<Num>& n,
+                                                                 Probe& probe) const {
   return ray_plane<Num>(r, p, n, probe);
 }
 

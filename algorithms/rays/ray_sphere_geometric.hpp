@@ -27,27 +27,36 @@ struct RaySphereGeometric {
   SW_LISTING("Geometric ray-sphere", SW_LINES_RAY_SPHERE_GEOMETRIC)
 #undef SW_LINES_RAY_SPHERE_GEOMETRIC
   // The algorithm itself, callable as RaySphereGeometric{}(...): ray_sphere_geometric below.
-  template <NumberType Num, StepProbe Probe> SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
-[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_geometric(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_geometric(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius,
+                                                                  Probe& probe) {
   using L = RaySphereGeometric;
   SphereHit<Num> out;
   const Vec3<Num> l = c - r.o;
   const Num l2 = dot(l, l), a = dot(r.d, r.d), r2 = radius * radius;
-  if constexpr (Probe::on) record_sphere_scene(probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2), r, c, radius);
-  const bool inside = l2 < r2, outside = l2 > r2;
+  if constexpr (Probe::on)
+    record_sphere_scene(probe.step(L::oc, StepKind::init).num("L2", l2).num("a", a).num("r2", r2), r, c, radius);
+  const bool inside = l2<r2, outside = l2> r2;
   if constexpr (Probe::on) probe.step(L::inside, StepKind::decide).idx("inside", inside).idx("on", !inside && !outside);
   const Num tca = dot(l, r.d);
-  if constexpr (Probe::on) probe.step(L::tca, StepKind::decide).num("tca", tca).point(Vec3<Num>(r.o + (tca / a) * r.d)).label("closest").keep();
+  if constexpr (Probe::on)
+    probe.step(L::tca, StepKind::decide).num("tca", tca).point(Vec3<Num>(r.o + (tca / a) * r.d)).label("closest").keep();
   if (!inside && !(tca > Num(0))) {
     if constexpr (Probe::on) probe.step(L::behind, StepKind::miss);
     return out;
   }
   const Num m2 = l2 - tca * tca / a;
   if constexpr (Probe::on)  // the line's closest approach to c, coloured by whether it is within r
-    probe.step(L::dist, StepKind::decide).num("m2", m2).segment(c, Vec3<Num>(r.o + (tca / a) * r.d)).label("r^2 - m2").value(r2 - m2).keep();
+    probe.step(L::dist, StepKind::decide)
+        .num("m2", m2)
+        .segment(c, Vec3<Num>(r.o + (tca / a) * r.d))
+        .label("r^2 - m2")
+        .value(r2 - m2)
+        .keep();
   if (m2 > r2) {
     if constexpr (Probe::on) probe.step(L::reject, StepKind::miss);
     return out;
@@ -65,7 +74,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline SphereHit<Num> RaySphereGeometric::operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const {
+[[gnu::always_inline]] inline SphereHit<Num> RaySphereGeometric::operator()(const Ray3<Num>& r, const Vec3<Num>& c,
+                                                                            const Num& radius, Probe& probe) const {
   return ray_sphere_geometric<Num>(r, c, radius, probe);
 }
 

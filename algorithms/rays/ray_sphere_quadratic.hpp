@@ -23,20 +23,31 @@ struct RaySphereQuadratic {
   SW_LISTING("Quadratic ray-sphere", SW_LINES_RAY_SPHERE_QUADRATIC)
 #undef SW_LINES_RAY_SPHERE_QUADRATIC
   // The algorithm itself, callable as RaySphereQuadratic{}(...): ray_sphere_quadratic below.
-  template <NumberType Num, StepProbe Probe> SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
-[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_quadratic(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius,
+                                                                  Probe& probe) {
   using L = RaySphereQuadratic;
   SphereHit<Num> out;
   const Vec3<Num> f = r.o - c;
   const Num a = dot(r.d, r.d), b = Num(2) * dot(f, r.d), cc = dot(f, f) - radius * radius;
-  if constexpr (Probe::on) record_sphere_scene(probe.step(L::coeffs, StepKind::init).num("a", a).num("b", b).num("c", cc), r, c, radius);
+  if constexpr (Probe::on)
+    record_sphere_scene(probe.step(L::coeffs, StepKind::init).num("a", a).num("b", b).num("c", cc), r, c, radius);
   const Num disc = b * b - Num(4) * a * cc;
   if constexpr (Probe::on) {  // the closest approach t_c = -b / 2a, and c's distance to it coloured by D's sign
     const Vec3<Num> closest = r.o + (-b / (Num(2) * a)) * r.d;
-    probe.step(L::disc, StepKind::decide).num("D", disc).point(closest).label("t_c").keep().segment(c, closest).label("D").value(disc).keep();
+    probe.step(L::disc, StepKind::decide)
+        .num("D", disc)
+        .point(closest)
+        .label("t_c")
+        .keep()
+        .segment(c, closest)
+        .label("D")
+        .value(disc)
+        .keep();
   }
   if (disc < Num(0)) {
     if constexpr (Probe::on) probe.step(L::miss, StepKind::miss);
@@ -45,8 +56,18 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const Num two_a = Num(2) * a, nb = -b;
   const num::Rooted<Num> r0 = add_root(nb, -1, disc), r1 = add_root(nb, 1, disc);
   const Num n0 = r0.value, n1 = r1.value;
-  if constexpr (Probe::on) probe.step(L::roots, StepKind::decide).num("n0", n0).num("n1", n1).num("t0", n0 / two_a).num("t1", n1 / two_a)
-        .point(Vec3<Num>(r.o + (n0 / two_a) * r.d)).label("t0").keep().point(Vec3<Num>(r.o + (n1 / two_a) * r.d)).label("t1").keep();
+  if constexpr (Probe::on)
+    probe.step(L::roots, StepKind::decide)
+        .num("n0", n0)
+        .num("n1", n1)
+        .num("t0", n0 / two_a)
+        .num("t1", n1 / two_a)
+        .point(Vec3<Num>(r.o + (n0 / two_a) * r.d))
+        .label("t0")
+        .keep()
+        .point(Vec3<Num>(r.o + (n1 / two_a) * r.d))
+        .label("t1")
+        .keep();
   // Branch-free from here (the outcome depends on the data); only the reported root is divided.
   const bool near_hit = n0 > Num(0), far_hit = n1 > Num(0);
   out = {bool(near_hit | far_hit), num::select(near_hit, n0, n1) / two_a, near_hit ? r0.exact : r1.exact};
@@ -55,7 +76,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline SphereHit<Num> RaySphereQuadratic::operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const {
+[[gnu::always_inline]] inline SphereHit<Num> RaySphereQuadratic::operator()(const Ray3<Num>& r, const Vec3<Num>& c,
+                                                                            const Num& radius, Probe& probe) const {
   return ray_sphere_quadratic<Num>(r, c, radius, probe);
 }
 

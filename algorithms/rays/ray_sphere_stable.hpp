@@ -29,20 +29,32 @@ struct RaySphereStable {
   SW_LISTING("Stable ray-sphere", SW_LINES_RAY_SPHERE_STABLE)
 #undef SW_LINES_RAY_SPHERE_STABLE
   // The algorithm itself, callable as RaySphereStable{}(...): ray_sphere_stable below.
-  template <NumberType Num, StepProbe Probe> SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  SphereHit<Num> operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
-[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_stable(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) {
+[[gnu::always_inline]] inline SphereHit<Num> ray_sphere_stable(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius,
+                                                               Probe& probe) {
   using L = RaySphereStable;
   SphereHit<Num> out;
   const Vec3<Num> f = r.o - c;
   const Num a = dot(r.d, r.d), bh = dot(f, r.d), r2 = radius * radius, cc = dot(f, f) - r2;
-  if constexpr (Probe::on) record_sphere_scene(probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc), r, c, radius);
+  if constexpr (Probe::on)
+    record_sphere_scene(probe.step(L::coeffs, StepKind::init).num("a", a).num("b'", bh).num("c", cc), r, c, radius);
   const Vec3<Num> l = f - (bh / a) * r.d;
   if constexpr (Probe::on)  // the foot of the perpendicular from c, and whether the line is within r of c
-    probe.step(L::foot, StepKind::advance).num("lx", l.x).num("ly", l.y).num("lz", l.z).point(Vec3<Num>(c + l)).label("foot").keep()
-        .segment(c, Vec3<Num>(c + l)).label("r^2 - |l|^2").value(r2 - dot(l, l)).keep();
+    probe.step(L::foot, StepKind::advance)
+        .num("lx", l.x)
+        .num("ly", l.y)
+        .num("lz", l.z)
+        .point(Vec3<Num>(c + l))
+        .label("foot")
+        .keep()
+        .segment(c, Vec3<Num>(c + l))
+        .label("r^2 - |l|^2")
+        .value(r2 - dot(l, l))
+        .keep();
   const Num disc = a * (r2 - dot(l, l));
   if constexpr (Probe::on) probe.step(L::disc, StepKind::decide).num("D", disc);
   if (disc < Num(0)) {
@@ -66,8 +78,15 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   if constexpr (Probe::on) {
     const Num t_qa = q / a, t_cq = cc / q;
     const Num near = num::select(b_neg, t_cq, t_qa), far = num::select(b_neg, t_qa, t_cq);
-    probe.step(L::order, StepKind::decide).num("near", near).num("far", far).point(Vec3<Num>(r.o + near * r.d)).label("near").keep()
-        .point(Vec3<Num>(r.o + far * r.d)).label("far").keep();
+    probe.step(L::order, StepKind::decide)
+        .num("near", near)
+        .num("far", far)
+        .point(Vec3<Num>(r.o + near * r.d))
+        .label("near")
+        .keep()
+        .point(Vec3<Num>(r.o + far * r.d))
+        .label("far")
+        .keep();
   }
   out.hit = far_hit;  // near_hit implies far_hit
   out.t = num::select(far_is_qa, q, cc) / num::select(far_is_qa, a, q);
@@ -76,7 +95,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline SphereHit<Num> RaySphereStable::operator()(const Ray3<Num>& r, const Vec3<Num>& c, const Num& radius, Probe& probe) const {
+[[gnu::always_inline]] inline SphereHit<Num> RaySphereStable::operator()(const Ray3<Num>& r, const Vec3<Num>& c,
+                                                                         const Num& radius, Probe& probe) const {
   return ray_sphere_stable<Num>(r, c, radius, probe);
 }
 

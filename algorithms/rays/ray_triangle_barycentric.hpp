@@ -22,16 +22,19 @@ struct RayTriangleBarycentric {
   SW_LISTING("Implementor's-guide ray-triangle", SW_LINES_RAY_TRIANGLE_BARYCENTRIC)
 #undef SW_LINES_RAY_TRIANGLE_BARYCENTRIC
   // The algorithm itself, callable as RayTriangleBarycentric{}(...): ray_triangle_barycentric below.
-  template <NumberType Num, StepProbe Probe> TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
-[[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_barycentric(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx, Probe& probe) {
+[[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_barycentric(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx,
+                                                                        Probe& probe) {
   using L = RayTriangleBarycentric;
   TriangleHit<Num> out;
   const Vec3<Num> e1 = vtx[1] - vtx[0], e2 = vtx[2] - vtx[0];
   const Vec3<Num> n = cross(e1, e2);
-  if constexpr (Probe::on) record_triangle_scene(probe.step(L::normal, StepKind::init).num("nx", n.x).num("ny", n.y).num("nz", n.z), r, vtx);
+  if constexpr (Probe::on)
+    record_triangle_scene(probe.step(L::normal, StepKind::init).num("nx", n.x).num("ny", n.y).num("nz", n.z), r, vtx);
   const Num den = dot(n, r.d);
   if constexpr (Probe::on) probe.step(L::denom, StepKind::decide).num("den", den);
   if (den == Num(0)) {
@@ -54,8 +57,18 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const Num gamma = (e1[i] * w[j] - e1[j] * w[i]) / nk;
   // Each weight is an edge test: b_i = 0 on the edge opposite v_i, so its sign colours that edge.
   if constexpr (Probe::on)
-    probe.step(L::solve, StepKind::decide).num("beta", beta).num("gamma", gamma).segment(vtx[2], vtx[0]).label("beta").value(beta)
-        .segment(vtx[0], vtx[1]).label("gamma").value(gamma).segment(vtx[1], vtx[2]).label("1 - beta - gamma").value(Num(1) - (beta + gamma));
+    probe.step(L::solve, StepKind::decide)
+        .num("beta", beta)
+        .num("gamma", gamma)
+        .segment(vtx[2], vtx[0])
+        .label("beta")
+        .value(beta)
+        .segment(vtx[0], vtx[1])
+        .label("gamma")
+        .value(gamma)
+        .segment(vtx[1], vtx[2])
+        .label("1 - beta - gamma")
+        .value(Num(1) - (beta + gamma));
   if (beta < Num(0) || gamma < Num(0) || beta + gamma > Num(1)) {
     if constexpr (Probe::on) probe.step(L::inside, StepKind::miss);
     return out;
@@ -68,7 +81,9 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleBarycentric::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const {
+[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleBarycentric::operator()(const Ray3<Num>& r,
+                                                                                  const std::array<Vec3<Num>, 3>& v,
+                                                                                  Probe& probe) const {
   return ray_triangle_barycentric<Num>(r, v, probe);
 }
 

@@ -23,11 +23,13 @@ struct RayTriangleMT {
   SW_LISTING("Moller-Trumbore", SW_LINES_RAY_TRIANGLE_M_T)
 #undef SW_LINES_RAY_TRIANGLE_M_T
   // The algorithm itself, callable as RayTriangleMT{}(...): ray_triangle_mt below.
-  template <NumberType Num, StepProbe Probe> TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
-[[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_mt(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx, Probe& probe) {
+[[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_mt(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& vtx,
+                                                               Probe& probe) {
   using L = RayTriangleMT;
   TriangleHit<Num> out;
   const Vec3<Num> e1 = vtx[1] - vtx[0], e2 = vtx[2] - vtx[0];
@@ -42,7 +44,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const Num inv = Num(1) / det;
   const Vec3<Num> s = r.o - vtx[0];
   const Num u = dot(s, p) * inv;
-  if constexpr (Probe::on) probe.step(L::u, StepKind::decide).num("u", u).segment(vtx[2], vtx[0]).label("u").value(u);  // u = 0 on the edge opposite v1
+  if constexpr (Probe::on)
+    probe.step(L::u, StepKind::decide).num("u", u).segment(vtx[2], vtx[0]).label("u").value(u);  // u = 0 on the edge opposite v1
   if (u < Num(0) || u > Num(1)) {
     if constexpr (Probe::on) probe.step(L::u, StepKind::miss);
     return out;
@@ -50,7 +53,14 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const Vec3<Num> q = cross(s, e1);
   const Num v = dot(r.d, q) * inv;
   if constexpr (Probe::on)
-    probe.step(L::v, StepKind::decide).num("v", v).segment(vtx[0], vtx[1]).label("v").value(v).segment(vtx[1], vtx[2]).label("1 - u - v").value(Num(1) - (u + v));
+    probe.step(L::v, StepKind::decide)
+        .num("v", v)
+        .segment(vtx[0], vtx[1])
+        .label("v")
+        .value(v)
+        .segment(vtx[1], vtx[2])
+        .label("1 - u - v")
+        .value(Num(1) - (u + v));
   if (v < Num(0) || u + v > Num(1)) {
     if constexpr (Probe::on) probe.step(L::v, StepKind::miss);
     return out;
@@ -69,7 +79,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleMT::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const {
+[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleMT::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v,
+                                                                         Probe& probe) const {
   return ray_triangle_mt<Num>(r, v, probe);
 }
 

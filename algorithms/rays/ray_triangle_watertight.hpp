@@ -35,11 +35,13 @@ struct RayTriangleWatertight {
   SW_LISTING("Watertight ray-triangle", SW_LINES_RAY_TRIANGLE_WATERTIGHT)
 #undef SW_LINES_RAY_TRIANGLE_WATERTIGHT
   // The algorithm itself, callable as RayTriangleWatertight{}(...): ray_triangle_watertight below.
-  template <NumberType Num, StepProbe Probe> TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
+  template <NumberType Num, StepProbe Probe>
+  TriangleHit<Num> operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const;
 };
 
 template <NumberType Num, StepProbe Probe = NoProbe>
-[[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_watertight(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) {
+[[gnu::always_inline]] inline TriangleHit<Num> ray_triangle_watertight(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v,
+                                                                       Probe& probe) {
   using L = RayTriangleWatertight;
   TriangleHit<Num> out;
   const int kz = num::max_axis(r.d);
@@ -50,7 +52,14 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   const Num sx = r.d[kx] / r.d[kz], sy = r.d[ky] / r.d[kz], sz = Num(1) / r.d[kz];
   if constexpr (Probe::on) probe.step(L::shear, StepKind::init).num("Sx", sx).num("Sy", sy).num("Sz", sz);
   const Vec3<Num> a = v[0] - r.o, b = v[1] - r.o, c = v[2] - r.o;
-  if constexpr (Probe::on) probe.step(L::translate, StepKind::init).segment(r.o, v[0]).label("A").segment(r.o, v[1]).label("B").segment(r.o, v[2]).label("C");
+  if constexpr (Probe::on)
+    probe.step(L::translate, StepKind::init)
+        .segment(r.o, v[0])
+        .label("A")
+        .segment(r.o, v[1])
+        .label("B")
+        .segment(r.o, v[2])
+        .label("C");
   const Num ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
   const Num bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
   const Num cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
@@ -59,8 +68,19 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   Num u = cx * by - cy * bx, w_v = ax * cy - ay * cx, w = bx * ay - by * ax;
   // U, V, W are the edge functions of the edges opposite v0, v1, v2: their signs colour those edges.
   if constexpr (Probe::on)
-    probe.step(L::edges, StepKind::decide).num("U", u).num("V", w_v).num("W", w).segment(v[1], v[2]).label("U").value(u)
-        .segment(v[2], v[0]).label("V").value(w_v).segment(v[0], v[1]).label("W").value(w);
+    probe.step(L::edges, StepKind::decide)
+        .num("U", u)
+        .num("V", w_v)
+        .num("W", w)
+        .segment(v[1], v[2])
+        .label("U")
+        .value(u)
+        .segment(v[2], v[0])
+        .label("V")
+        .value(w_v)
+        .segment(v[0], v[1])
+        .label("W")
+        .value(w);
   if constexpr (std::is_same_v<Num, float>) {
     if (u == 0.0f || w_v == 0.0f || w == 0.0f) {
       // Float edge functions of exactly zero are retried with double products of the same
@@ -70,8 +90,19 @@ template <NumberType Num, StepProbe Probe = NoProbe>
       const double bxy = double(bx) * double(ay), byx = double(by) * double(ax);
       u = float(cxy - cyx), w_v = float(axy - ayx), w = float(bxy - byx);
       if constexpr (Probe::on)
-        probe.step(L::retry, StepKind::decide).num("U", u).num("V", w_v).num("W", w).segment(v[1], v[2]).label("U").value(u)
-            .segment(v[2], v[0]).label("V").value(w_v).segment(v[0], v[1]).label("W").value(w);
+        probe.step(L::retry, StepKind::decide)
+            .num("U", u)
+            .num("V", w_v)
+            .num("W", w)
+            .segment(v[1], v[2])
+            .label("U")
+            .value(u)
+            .segment(v[2], v[0])
+            .label("V")
+            .value(w_v)
+            .segment(v[0], v[1])
+            .label("W")
+            .value(w);
     }
   }
   const int su = num::sign(u), sv = num::sign(w_v), sw = num::sign(w);
@@ -99,13 +130,21 @@ template <NumberType Num, StepProbe Probe = NoProbe>
   out.b = {u * inv_det, w_v * inv_det, w * inv_det};
   if constexpr (Probe::on) {
     const Vec3<Num> p = r.o + out.t * r.d;
-    probe.step(L::hit, StepKind::hit).num("t", out.t).num("b0", out.b[0]).num("b1", out.b[1]).num("b2", out.b[2]).point(p).label("hit");
+    probe.step(L::hit, StepKind::hit)
+        .num("t", out.t)
+        .num("b0", out.b[0])
+        .num("b1", out.b[1])
+        .num("b2", out.b[2])
+        .point(p)
+        .label("hit");
   }
   return out;
 }
 
 template <NumberType Num, StepProbe Probe>
-[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleWatertight::operator()(const Ray3<Num>& r, const std::array<Vec3<Num>, 3>& v, Probe& probe) const {
+[[gnu::always_inline]] inline TriangleHit<Num> RayTriangleWatertight::operator()(const Ray3<Num>& r,
+                                                                                 const std::array<Vec3<Num>, 3>& v,
+                                                                                 Probe& probe) const {
   return ray_triangle_watertight<Num>(r, v, probe);
 }
 

@@ -18,7 +18,8 @@ template <class Step, class Num> void record_sphere_scene(Step& step, const Ray3
   step.ray(r.o, r.d).keep().sphere(c, radius).keep();
 }
 // The last step on listing L's line near, far or none.
-template <class L, class Num, class Probe> void record_sphere_end(Probe& probe, const Ray3<Num>& r, const Num& t, bool near_hit, bool far_hit) {
+template <class L, class Num, class Probe>
+void record_sphere_end(Probe& probe, const Ray3<Num>& r, const Num& t, bool near_hit, bool far_hit) {
   if (near_hit) probe.step(L::near, StepKind::hit).point(Vec3<Num>(r.o + t * r.d)).label("hit");
   else if (far_hit) probe.step(L::far, StepKind::hit).point(Vec3<Num>(r.o + t * r.d)).label("hit");
   else probe.step(L::none, StepKind::miss);

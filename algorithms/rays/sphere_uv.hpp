@@ -29,15 +29,26 @@ struct SphereUVAlgo {
 };
 
 // Precondition: p != c (validated).
-template <NumberType Num, StepProbe Probe = NoProbe> SphereUV<Num> sphere_uv(const Vec3<Num>& c, const Vec3<Num>& p, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe>
+SphereUV<Num> sphere_uv(const Vec3<Num>& c, const Vec3<Num>& p, Probe& probe) {
   using L = SphereUVAlgo;
   SphereUV<Num> out;
   const Vec3<Num> q = p - c;
   out.normal = (Num(1) / num::sqrt_of(dot(q, q))) * q;
   const Vec3<Num>& n = out.normal;
   if constexpr (Probe::on)
-    probe.step(L::normal, StepKind::init).num("Nx", n.x).num("Ny", n.y).num("Nz", n.z).sphere(c, num::sqrt_of(dot(q, q))).keep()
-        .point(p).label("P").keep().segment(p, Vec3<Num>(p + n)).label("N").keep();
+    probe.step(L::normal, StepKind::init)
+        .num("Nx", n.x)
+        .num("Ny", n.y)
+        .num("Nz", n.z)
+        .sphere(c, num::sqrt_of(dot(q, q)))
+        .keep()
+        .point(p)
+        .label("P")
+        .keep()
+        .segment(p, Vec3<Num>(p + n))
+        .label("N")
+        .keep();
   out.lon = num::atan2(n.y, n.x);
   if constexpr (Probe::on) probe.step(L::lon, StepKind::advance).num("lon", out.lon);
   out.lat = num::atan2(n.z, num::sqrt_of(n.x * n.x + n.y * n.y));

@@ -36,11 +36,11 @@ struct BspNode {
 };
 
 template <class Num> struct BspTree {
-  std::vector<BspNode> nodes;               // node 0 is the root
-  std::vector<BspFragment<Num>> frags;      // 0..n-1 start as the input segments
-  std::vector<Box<Num, 2>> boxes;           // per node: the box of the fragments it received
+  std::vector<BspNode> nodes;           // node 0 is the root
+  std::vector<BspFragment<Num>> frags;  // 0..n-1 start as the input segments
+  std::vector<Box<Num, 2>> boxes;       // per node: the box of the fragments it received
   std::size_t depth = 0, splits = 0, leaves = 0;
-  bool exhausted = false;                   // a cut would pass the fragment budget: the build stopped
+  bool exhausted = false;  // a cut would pass the fragment budget: the build stopped
 };
 
 // Candidates per node: the cost of a candidate costs one pass over the node's fragments.
@@ -65,11 +65,11 @@ struct BspCost {
   std::int64_t splits = 0, front = 0, back = 0, cost = 0;
 };
 // A candidate line's cost over a node's fragments: 3 splits + |front - back| (a cut piece counts on both sides).
-template <class Num>
-BspCost bsp_cost(const std::vector<Segment2<Num>>& segs, std::int32_t seg, const std::vector<std::int32_t>& list, const std::vector<BspFragment<Num>>& frags) {
+template <class Num> BspCost bsp_cost(const std::vector<Segment2<Num>>& segs, std::int32_t seg,
+                                      const std::vector<std::int32_t>& list, const std::vector<BspFragment<Num>>& frags) {
   BspCost c;
   const Segment2<Num>& line = segs[seg];
-  for (std::int32_t f : list) {  // bounded: the node's fragments
+  for (std::int32_t f : list) {         // bounded: the node's fragments
     if (frags[f].seg == seg) continue;  // on the line
     const BspSide s = bsp_side(orient2(line.a, line.b, frags[f].a), orient2(line.a, line.b, frags[f].b));
     c.splits += s == BspSide::split;
@@ -109,7 +109,8 @@ template <class Num> std::array<Vec2<Num>, 2> bsp_line_across(const Segment2<Num
 
 struct BspBuild {
   static constexpr std::string_view id = "bsp-build";
-  static constexpr std::string_view summary = "2D BSP tree over segments by auto-partition: splitters by cost, crossing segments cut";
+  static constexpr std::string_view summary =
+      "2D BSP tree over segments by auto-partition: splitters by cost, crossing segments cut";
 #define SW_LINES_BSP_BUILD(X) \
   X(root, "root <- a node holding every segment as a fragment") \
   X(loop, "while some node waits to be partitioned:               -- depth first, front child first") \
@@ -142,8 +143,13 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
   t.boxes.push_back(bsp_box(all, t.frags));
   const Box<Num, 2> view = t.boxes[0];
   if constexpr (Probe::on) {
-    probe.step(L::root, StepKind::init).idx("node", 0).idx("m", static_cast<std::int64_t>(all.size())).node(0, -1, view.lo, view.hi).keep();
-    for (std::size_t i = 0; i < segs.size(); ++i) probe.segment(segs[i].a, segs[i].b).label("seg").value(Num(static_cast<std::int64_t>(i))).keep();
+    probe.step(L::root, StepKind::init)
+        .idx("node", 0)
+        .idx("m", static_cast<std::int64_t>(all.size()))
+        .node(0, -1, view.lo, view.hi)
+        .keep();
+    for (std::size_t i = 0; i < segs.size(); ++i)
+      probe.segment(segs[i].a, segs[i].b).label("seg").value(Num(static_cast<std::int64_t>(i))).keep();
   }
   std::vector<std::pair<std::int32_t, std::vector<std::int32_t>>> work;
   work.emplace_back(0, std::move(all));
@@ -155,7 +161,9 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
     work.pop_back();
     const std::size_t m = list.size(), k_max = std::min(m, kBspCandidates);
     if constexpr (Probe::on)
-      probe.step(L::take, StepKind::visit).idx("node", id).idx("m", static_cast<std::int64_t>(m))
+      probe.step(L::take, StepKind::visit)
+          .idx("node", id)
+          .idx("m", static_cast<std::int64_t>(m))
           .node(id, t.nodes[id].parent, t.boxes[id].lo, t.boxes[id].hi);
     std::size_t best = 0;
     std::int64_t best_cost = -1;
@@ -165,16 +173,29 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
       const BspCost cost = bsp_cost(segs, c.seg, list, t.frags);
       if (best_cost < 0 || cost.cost < best_cost) best = pos, best_cost = cost.cost;
       if constexpr (Probe::on)
-        probe.step(L::choose, StepKind::decide).idx("cand", list[pos]).idx("seg", c.seg).idx("splits", cost.splits)
-            .idx("front", cost.front).idx("back", cost.back).idx("cost", cost.cost).idx("best", list[best])
-            .segment(c.a, c.b).label("candidate").value(Num(cost.cost));
+        probe.step(L::choose, StepKind::decide)
+            .idx("cand", list[pos])
+            .idx("seg", c.seg)
+            .idx("splits", cost.splits)
+            .idx("front", cost.front)
+            .idx("back", cost.back)
+            .idx("cost", cost.cost)
+            .idx("best", list[best])
+            .segment(c.a, c.b)
+            .label("candidate")
+            .value(Num(cost.cost));
     }
     const std::int32_t s = t.frags[list[best]].seg;
     const Segment2<Num>& line = segs[s];
     t.nodes[id].splitter = s;
     if constexpr (Probe::on) {
       const auto across = bsp_line_across(line, view);
-      probe.step(L::splitter, StepKind::advance).idx("node", id).idx("seg", s).segment(across[0], across[1]).label("splitter").keep();
+      probe.step(L::splitter, StepKind::advance)
+          .idx("node", id)
+          .idx("seg", s)
+          .segment(across[0], across[1])
+          .label("splitter")
+          .keep();
     }
     std::vector<std::int32_t> front, back;
     for (const std::int32_t f : list) {  // bounded: the node's fragments
@@ -188,8 +209,17 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
         (side == BspSide::on ? t.nodes[id].frags : side == BspSide::front ? front : back).push_back(f);
         if constexpr (Probe::on) {
           const L::Line at = side == BspSide::on ? L::on_line : side == BspSide::front ? L::front : L::back;
-          probe.step(at, StepKind::decide).idx("frag", f).idx("seg", ab.seg).num("s_a", sa).num("s_b", sb)
-              .point(ab.a).value(sa).point(ab.b).value(sb).segment(ab.a, ab.b).value(sa + sb);
+          probe.step(at, StepKind::decide)
+              .idx("frag", f)
+              .idx("seg", ab.seg)
+              .num("s_a", sa)
+              .num("s_b", sb)
+              .point(ab.a)
+              .value(sa)
+              .point(ab.b)
+              .value(sb)
+              .segment(ab.a, ab.b)
+              .value(sa + sb);
         }
         continue;
       }
@@ -205,8 +235,23 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
       (sa < Num(0) ? front : back).push_back(g);
       ++t.splits;
       if constexpr (Probe::on)
-        probe.step(L::split, StepKind::advance).idx("frag", f).idx("seg", ab.seg).num("s_a", sa).num("s_b", sb).idx("new", g).vec("x", x)
-            .point(ab.a).value(sa).point(ab.b).value(sb).segment(ab.a, x).value(sa).segment(x, ab.b).value(sb).point(x).label("x");
+        probe.step(L::split, StepKind::advance)
+            .idx("frag", f)
+            .idx("seg", ab.seg)
+            .num("s_a", sa)
+            .num("s_b", sb)
+            .idx("new", g)
+            .vec("x", x)
+            .point(ab.a)
+            .value(sa)
+            .point(ab.b)
+            .value(sb)
+            .segment(ab.a, x)
+            .value(sa)
+            .segment(x, ab.b)
+            .value(sb)
+            .point(x)
+            .label("x");
     }
     const std::int32_t depth = t.nodes[id].depth + 1;
     for (int side : {1, -1}) {
@@ -219,16 +264,25 @@ BspTree<Num> bsp_build(const std::vector<Segment2<Num>>& segs, std::size_t max_f
       t.boxes.push_back(bsp_box(part, t.frags));
       t.depth = std::max(t.depth, static_cast<std::size_t>(depth));
       if constexpr (Probe::on)
-        probe.step(L::child, StepKind::init).idx("node", c).idx("parent", id).idx("side", side).idx("m", static_cast<std::int64_t>(part.size()))
-            .node(c, id, t.boxes[c].lo, t.boxes[c].hi).keep();
+        probe.step(L::child, StepKind::init)
+            .idx("node", c)
+            .idx("parent", id)
+            .idx("side", side)
+            .idx("m", static_cast<std::int64_t>(part.size()))
+            .node(c, id, t.boxes[c].lo, t.boxes[c].hi)
+            .keep();
     }
     if (front.empty() && back.empty()) ++t.leaves;
     if (!back.empty()) work.emplace_back(t.nodes[id].back, std::move(back));
     if (!front.empty()) work.emplace_back(t.nodes[id].front, std::move(front));
   }
   if constexpr (Probe::on)
-    probe.step(L::done, StepKind::done).idx("nodes", static_cast<std::int64_t>(t.nodes.size())).idx("fragments", static_cast<std::int64_t>(t.frags.size()))
-        .idx("splits", static_cast<std::int64_t>(t.splits)).idx("depth", static_cast<std::int64_t>(t.depth)).idx("leaves", static_cast<std::int64_t>(t.leaves));
+    probe.step(L::done, StepKind::done)
+        .idx("nodes", static_cast<std::int64_t>(t.nodes.size()))
+        .idx("fragments", static_cast<std::int64_t>(t.frags.size()))
+        .idx("splits", static_cast<std::int64_t>(t.splits))
+        .idx("depth", static_cast<std::int64_t>(t.depth))
+        .idx("leaves", static_cast<std::int64_t>(t.leaves));
   return t;
 }
 

@@ -36,7 +36,8 @@ BspPaint<Num> bsp_painter(const std::vector<Segment2<Num>>& segs, const Vec2<Num
   if constexpr (Probe::on) {
     auto& s = probe.step(L::build, StepKind::init).idx("n", static_cast<std::int64_t>(segs.size()));
     s.point(eye).label("eye").keep();
-    for (std::size_t i = 0; i < segs.size(); ++i) s.segment(segs[i].a, segs[i].b).label("seg").value(Num(static_cast<std::int64_t>(i))).keep();
+    for (std::size_t i = 0; i < segs.size(); ++i)
+      s.segment(segs[i].a, segs[i].b).label("seg").value(Num(static_cast<std::int64_t>(i))).keep();
   }
   {
     const auto call = nested<BspBuild>(probe);
@@ -56,8 +57,15 @@ BspPaint<Num> bsp_painter(const std::vector<Segment2<Num>>& segs, const Vec2<Num
       for (const std::int32_t f : t.nodes[id].frags) {  // bounded: the node's fragments
         out.order.push_back(f);
         if constexpr (Probe::on)
-          probe.step(L::plot, StepKind::plot).idx("node", id).idx("frag", f).idx("seg", t.frags[f].seg).idx("k", static_cast<std::int64_t>(out.order.size()) - 1)
-              .segment(t.frags[f].a, t.frags[f].b).label("k").value(Num(static_cast<std::int64_t>(out.order.size()) - 1)).keep();
+          probe.step(L::plot, StepKind::plot)
+              .idx("node", id)
+              .idx("frag", f)
+              .idx("seg", t.frags[f].seg)
+              .idx("k", static_cast<std::int64_t>(out.order.size()) - 1)
+              .segment(t.frags[f].a, t.frags[f].b)
+              .label("k")
+              .value(Num(static_cast<std::int64_t>(out.order.size()) - 1))
+              .keep();
       }
       continue;
     }
@@ -68,14 +76,24 @@ BspPaint<Num> bsp_painter(const std::vector<Segment2<Num>>& segs, const Vec2<Num
     const std::int32_t near = in_front ? n.front : n.back, far = in_front ? n.back : n.front;
     if constexpr (Probe::on) {
       const auto across = bsp_line_across(line, t.boxes[0]);
-      probe.step(L::visit, StepKind::decide).idx("node", task).idx("seg", n.splitter).num("s", s).idx("in_front", in_front)
-          .node(task, n.parent, t.boxes[task].lo, t.boxes[task].hi).segment(across[0], across[1]).label("splitter").value(s);
+      probe.step(L::visit, StepKind::decide)
+          .idx("node", task)
+          .idx("seg", n.splitter)
+          .num("s", s)
+          .idx("in_front", in_front)
+          .node(task, n.parent, t.boxes[task].lo, t.boxes[task].hi)
+          .segment(across[0], across[1])
+          .label("splitter")
+          .value(s);
     }
     if (near >= 0) stack.push_back(near);
     stack.push_back(-task - 1);
     if (far >= 0) stack.push_back(far);
     if constexpr (Probe::on)
-      probe.step(L::push, StepKind::advance).idx("near", near).idx("far", far).idx("stack", static_cast<std::int64_t>(stack.size()));
+      probe.step(L::push, StepKind::advance)
+          .idx("near", near)
+          .idx("far", far)
+          .idx("stack", static_cast<std::int64_t>(stack.size()));
   }
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("painted", static_cast<std::int64_t>(out.order.size()));
   return out;

@@ -18,7 +18,7 @@ namespace sw::spatial {
 
 inline constexpr int kBvhBins = 16;
 inline constexpr std::int32_t kBvhMaxLeaf = 8;  // a node of more triangles is always split
-inline constexpr int kBvhSahDepth = 48;  // from this depth on, median splits (log depth)
+inline constexpr int kBvhSahDepth = 48;         // from this depth on, median splits (log depth)
 // The SAH's cost of visiting an inner node, against 1 per triangle tested: a visit runs two slab
 // tests, each about as costly as one watertight triangle test.
 inline constexpr int kBvhTraversalCost = 2;
@@ -27,20 +27,21 @@ inline constexpr int kBvhMaxDepth = kBvhSahDepth + 22;  // 2^21 triangles halve 
 template <class Num> struct BvhNode {
   Box<Num, 3> box;
   std::int32_t parent = -1, left = -1, right = -1;  // children; -1 for a leaf
-  std::int32_t first = 0, count = 0;               // the triangles order[first, first + count)
+  std::int32_t first = 0, count = 0;                // the triangles order[first, first + count)
   std::int32_t depth = 0;
-  std::int8_t axis = -1;                           // the split axis; -1 for a leaf
+  std::int8_t axis = -1;  // the split axis; -1 for a leaf
 };
 
 template <class Num> struct Bvh {
-  std::vector<BvhNode<Num>> nodes;   // node 0 is the root; children are created in pairs
-  std::vector<std::int32_t> order;   // triangle ids; every node's triangles are one run
+  std::vector<BvhNode<Num>> nodes;  // node 0 is the root; children are created in pairs
+  std::vector<std::int32_t> order;  // triangle ids; every node's triangles are one run
   std::size_t leaves = 0, depth = 0;
 };
 
 struct BvhBuild {
   static constexpr std::string_view id = "bvh-build";
-  static constexpr std::string_view summary = "BVH over triangles by binned SAH (16 bins per axis), exact node boxes, median split past depth 48";
+  static constexpr std::string_view summary =
+      "BVH over triangles by binned SAH (16 bins per axis), exact node boxes, median split past depth 48";
 #define SW_LINES_BVH_BUILD(X) \
   X(bounds, "for each triangle i: B_i <- the box of its vertices; c_i <- lo + hi   -- twice the centroid, no division") \
   X(root, "root <- all triangles, its box the union of the B_i; push root") \
@@ -49,7 +50,9 @@ struct BvhBuild {
   X(bins, "    for each axis k with C_lo,k < C_hi,k: c_i goes to bin floor((c_ik - C_lo,k) 16 / (C_hi,k - C_lo,k)), at most 15") \
   X(sweep, "        for each split s between bins: cost <- A(left) n(left) + A(right) n(right), both sides non-empty") \
   X(decide, "    best <- the least cost (ties: lowest axis, then lowest s); leaf if n <= 8 and n A(B) <= 2 A(B) + best") \
-  X(median, "    if no split was found, or depth >= 48: split at the median of (c_ik, i) on C's longest axis k (leaf if n <= 8 at depth >= 48)") \
+  X(median, \
+    "    if no split was found, or depth >= 48: split at the median of (c_ik, i) on C's longest axis k (leaf if n <= 8 at " \
+    "depth >= 48)") \
   X(leaf, "    leaf: keep its triangles") \
   X(split, "    else: left, right <- the two sides, each boxed exactly; push right, then left") \
   X(done, "done: nodes, leaves, depth")
@@ -59,7 +62,8 @@ struct BvhBuild {
 
 namespace bvh_detail {
 // The union of the boxes of order[first, first + count).
-template <class Num> Box<Num, 3> union_of(const std::vector<Box<Num, 3>>& boxes, const std::vector<std::int32_t>& order, std::int32_t first, std::int32_t count) {
+template <class Num> Box<Num, 3> union_of(const std::vector<Box<Num, 3>>& boxes, const std::vector<std::int32_t>& order,
+                                          std::int32_t first, std::int32_t count) {
   Box<Num, 3> b = boxes[order[first]];
   for (std::int32_t j = first + 1; j < first + count; ++j) b.grow(boxes[order[j]]);
   return b;
@@ -92,7 +96,8 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
   for (std::int32_t i = 0; i < n_tris; ++i) out.order[i] = i;
   out.nodes.reserve(2 * tris.size());
   out.nodes.push_back({bvh_detail::union_of(boxes, out.order, 0, n_tris), -1, -1, -1, 0, n_tris, 0, -1});
-  if constexpr (Probe::on) probe.step(L::root, StepKind::init).idx("node", 0).node(0, -1, out.nodes[0].box.lo, out.nodes[0].box.hi).keep();
+  if constexpr (Probe::on)
+    probe.step(L::root, StepKind::init).idx("node", 0).node(0, -1, out.nodes[0].box.lo, out.nodes[0].box.hi).keep();
   std::vector<std::int32_t> stack{0}, scratch(tris.size());
   std::vector<std::uint8_t> bins(3 * tris.size());  // each triangle's bin on each axis, at its latest node
   // Bounded: every node is pushed once, and a split makes two non-empty sides, so at most 2n - 1 nodes.
@@ -104,7 +109,12 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
     B3 c = B3::at(cen[out.order[nd.first]]);
     for (std::int32_t j = nd.first + 1; j < nd.first + n; ++j) c.grow(cen[out.order[j]]);
     if constexpr (Probe::on)
-      probe.step(L::pop, StepKind::visit).idx("node", id).idx("n", n).idx("depth", nd.depth).vec("C_lo", c.lo).vec("C_hi", c.hi)
+      probe.step(L::pop, StepKind::visit)
+          .idx("node", id)
+          .idx("n", n)
+          .idx("depth", nd.depth)
+          .vec("C_lo", c.lo)
+          .vec("C_hi", c.hi)
           .node(id, nd.parent, nd.box.lo, nd.box.hi);
     out.depth = std::max<std::size_t>(out.depth, static_cast<std::size_t>(nd.depth));
     auto leaf = [&] {
@@ -170,8 +180,10 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
           const Num cost = acc.half_area() * Num(m) + right_area[s] * Num(right_n[s]);
           if (axis_split == 0 || cost < axis_cost) axis_cost = cost, axis_split = s, axis_left = m;
         }
-        if constexpr (Probe::on) probe.step(L::sweep, StepKind::advance).idx("axis", k).idx("s", axis_split).num("cost", axis_cost);
-        if (axis_split > 0 && (best_axis < 0 || axis_cost < best_cost)) best_axis = k, best_split = axis_split, best_cost = axis_cost, best_left = axis_left;
+        if constexpr (Probe::on)
+          probe.step(L::sweep, StepKind::advance).idx("axis", k).idx("s", axis_split).num("cost", axis_cost);
+        if (axis_split > 0 && (best_axis < 0 || axis_cost < best_cost))
+          best_axis = k, best_split = axis_split, best_cost = axis_cost, best_left = axis_left;
       }
     }
     const Num area = nd.box.half_area();
@@ -179,7 +191,12 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
       const Num leaf_cost = Num(n) * area, split_cost = Num(kBvhTraversalCost) * area + best_cost;
       const bool make_leaf = n <= kBvhMaxLeaf && !(split_cost < leaf_cost);
       if constexpr (Probe::on)
-        probe.step(L::decide, StepKind::decide).idx("axis", best_axis).idx("s", best_split).num("leaf_cost", leaf_cost).num("split_cost", split_cost).idx("leaf", make_leaf);
+        probe.step(L::decide, StepKind::decide)
+            .idx("axis", best_axis)
+            .idx("s", best_split)
+            .num("leaf_cost", leaf_cost)
+            .num("split_cost", split_cost)
+            .idx("leaf", make_leaf);
       if (make_leaf) {
         leaf();
         continue;
@@ -204,22 +221,37 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
         leaf();
         continue;
       }
-      std::stable_sort(out.order.begin() + nd.first, out.order.begin() + nd.first + n, [&](std::int32_t a, std::int32_t b) { return cen[a][k] < cen[b][k]; });
+      std::stable_sort(out.order.begin() + nd.first, out.order.begin() + nd.first + n,
+                       [&](std::int32_t a, std::int32_t b) { return cen[a][k] < cen[b][k]; });
       out.nodes[id].axis = static_cast<std::int8_t>(k);
       out.nodes[id].left = n / 2;
     }
     const std::int32_t left_n = out.nodes[id].left;
     const auto l = static_cast<std::int32_t>(out.nodes.size()), r = l + 1;
     out.nodes[id].left = l, out.nodes[id].right = r;
-    out.nodes.push_back({bvh_detail::union_of(boxes, out.order, nd.first, left_n), id, -1, -1, nd.first, left_n, nd.depth + 1, -1});
-    out.nodes.push_back({bvh_detail::union_of(boxes, out.order, nd.first + left_n, n - left_n), id, -1, -1, nd.first + left_n, n - left_n, nd.depth + 1, -1});
+    out.nodes.push_back(
+        {bvh_detail::union_of(boxes, out.order, nd.first, left_n), id, -1, -1, nd.first, left_n, nd.depth + 1, -1});
+    out.nodes.push_back({bvh_detail::union_of(boxes, out.order, nd.first + left_n, n - left_n), id, -1, -1, nd.first + left_n,
+                         n - left_n, nd.depth + 1, -1});
     if constexpr (Probe::on)
-      probe.step(L::split, StepKind::advance).idx("node", id).idx("axis", out.nodes[id].axis).idx("left", l).idx("right", r).idx("n_left", left_n).idx("n_right", n - left_n)
-          .node(l, id, out.nodes[l].box.lo, out.nodes[l].box.hi).keep().node(r, id, out.nodes[r].box.lo, out.nodes[r].box.hi).keep();
+      probe.step(L::split, StepKind::advance)
+          .idx("node", id)
+          .idx("axis", out.nodes[id].axis)
+          .idx("left", l)
+          .idx("right", r)
+          .idx("n_left", left_n)
+          .idx("n_right", n - left_n)
+          .node(l, id, out.nodes[l].box.lo, out.nodes[l].box.hi)
+          .keep()
+          .node(r, id, out.nodes[r].box.lo, out.nodes[r].box.hi)
+          .keep();
     stack.push_back(r), stack.push_back(l);
   }
   if constexpr (Probe::on)
-    probe.step(L::done, StepKind::done).idx("nodes", static_cast<std::int64_t>(out.nodes.size())).idx("leaves", static_cast<std::int64_t>(out.leaves)).idx("depth", static_cast<std::int64_t>(out.depth));
+    probe.step(L::done, StepKind::done)
+        .idx("nodes", static_cast<std::int64_t>(out.nodes.size()))
+        .idx("leaves", static_cast<std::int64_t>(out.leaves))
+        .idx("depth", static_cast<std::int64_t>(out.depth));
   return out;
 }
 

@@ -29,7 +29,8 @@ template <class Num> struct BvhQuery {
 
 struct BvhTraverse {
   static constexpr std::string_view id = "bvh-traverse";
-  static constexpr std::string_view summary = "Ray through a BVH: nearer child first, prune on entry t > best t; closest hit (ties by id) or any hit";
+  static constexpr std::string_view summary =
+      "Ray through a BVH: nearer child first, prune on entry t > best t; closest hit (ties by id) or any hit";
 #define SW_LINES_BVH_TRAVERSE(X) \
   X(build, "build the BVH over the triangles with bvh-build") \
   X(root, "test the root's box with ray-box; a miss: no hit; else push (root, t_entry)") \
@@ -64,14 +65,16 @@ template <class Num> struct Stack {
 // The stack's depth and its nodes' boxes, on the step s.
 template <class Step, class Num> void record_stack(Step& s, const Bvh<Num>& bvh, const Stack<Num>& stack) {
   s.idx("stack", static_cast<std::int64_t>(stack.size));
-  for (std::size_t k = 0; k < stack.size; ++k) s.box(bvh.nodes[stack.at[k].node].box.lo, bvh.nodes[stack.at[k].node].box.hi).label("stack");
+  for (std::size_t k = 0; k < stack.size; ++k)
+    s.box(bvh.nodes[stack.at[k].node].box.lo, bvh.nodes[stack.at[k].node].box.hi).label("stack");
 }
 }  // namespace bvh_detail
 
 // The traversal of a built BVH (what bvh-traverse does after its build). Precondition: bvh built
 // over tris; r.d != 0; q.t_max > 0 when q.any.
 template <NumberType Num, StepProbe Probe = NoProbe>
-BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r, const BvhQuery<Num>& q, Probe& probe) {
+BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r,
+                      const BvhQuery<Num>& q, Probe& probe) {
   using L = BvhTraverse;
   BvhHit<Num> out;
   auto box_test = [&](std::int32_t node) __attribute__((always_inline)) {
@@ -92,12 +95,19 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
     const BvhNode<Num>& nd = bvh.nodes[e.node];
     const bool pruned = q.any ? !(e.t < q.t_max) : out.hit && out.t < e.t;
     if (pruned) {
-      if constexpr (Probe::on) probe.step(L::prune, StepKind::decide).idx("node", e.node).num("t_entry", e.t).num(q.any ? "t_max" : "t_best", q.any ? q.t_max : out.t);
+      if constexpr (Probe::on)
+        probe.step(L::prune, StepKind::decide)
+            .idx("node", e.node)
+            .num("t_entry", e.t)
+            .num(q.any ? "t_max" : "t_best", q.any ? q.t_max : out.t);
       continue;
     }
     ++out.nodes_visited;
     if constexpr (Probe::on) {
-      auto& s = probe.step(L::pop, StepKind::visit).idx("node", e.node).num("t_entry", e.t).node(e.node, nd.parent, nd.box.lo, nd.box.hi);
+      auto& s = probe.step(L::pop, StepKind::visit)
+                    .idx("node", e.node)
+                    .num("t_entry", e.t)
+                    .node(e.node, nd.parent, nd.box.lo, nd.box.hi);
       bvh_detail::record_stack(s, bvh, stack);
     }
     if (nd.left < 0) {
@@ -117,7 +127,11 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
     }
     const ray::BoxHit<Num> hl = box_test(nd.left), hr = box_test(nd.right);
     if constexpr (Probe::on) {
-      auto& s = probe.step(L::boxes, StepKind::decide).idx("left", nd.left).idx("right", nd.right).idx("left_hit", hl.hit).idx("right_hit", hr.hit);
+      auto& s = probe.step(L::boxes, StepKind::decide)
+                    .idx("left", nd.left)
+                    .idx("right", nd.right)
+                    .idx("left_hit", hl.hit)
+                    .idx("right_hit", hr.hit);
       if (hl.hit) s.num("t_left", hl.t_near);
       if (hr.hit) s.num("t_right", hr.t_near);
     }
@@ -140,15 +154,18 @@ BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num
 }
 
 // The listing: the build (a nested bvh-build), then the query.
-template <NumberType Num, StepProbe Probe = NoProbe>
-BvhHit<Num> bvh_traverse(const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r, const BvhQuery<Num>& q, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> BvhHit<Num> bvh_traverse(const std::vector<std::array<Vec3<Num>, 3>>& tris,
+                                                                              const ray::Ray3<Num>& r, const BvhQuery<Num>& q,
+                                                                              Probe& probe) {
   using L = BvhTraverse;
   const Bvh<Num> bvh = [&] {
     const auto call = nested<BvhBuild>(probe);
     return bvh_build<Num>(tris, probe);
   }();
   if constexpr (Probe::on) {
-    auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(bvh.nodes.size())).idx("depth", static_cast<std::int64_t>(bvh.depth));
+    auto& s = probe.step(L::build, StepKind::init)
+                  .idx("nodes", static_cast<std::int64_t>(bvh.nodes.size()))
+                  .idx("depth", static_cast<std::int64_t>(bvh.depth));
     s.ray(r.o, r.d).keep();
     for (const auto& t : tris) s.triangle(t[0], t[1], t[2]).keep();  // the build's own items end with it
   }

@@ -12,7 +12,7 @@ template <class Num, int D> struct CellNode {
   std::int32_t parent = -1;
   std::int32_t first_child = -1;  // children are first_child .. first_child + 2^D - 1; -1: a leaf
   int depth = 0;
-  Box<Num, D> cell;                // closed bounds; see child_of for which points it owns
+  Box<Num, D> cell;                 // closed bounds; see child_of for which points it owns
   std::vector<std::int32_t> items;  // a leaf's point or triangle ids, ascending
 };
 

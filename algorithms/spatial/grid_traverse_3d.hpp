@@ -33,7 +33,8 @@ template <NumberType Num> std::int64_t cell_index(const Num& x, bool from_below)
 
 struct GridTraverse3d {
   static constexpr std::string_view id = "grid-traverse-3d";
-  static constexpr std::string_view summary = "3D grid walk (Amanatides-Woo): every cell the half-open segment passes through, in order";
+  static constexpr std::string_view summary =
+      "3D grid walk (Amanatides-Woo): every cell the half-open segment passes through, in order";
 #define SW_SPATIAL_GRID_TRAVERSE_3D(X) \
   X(delta, "d <- p1 - p0; if d = 0: stop                       -- empty segment") \
   X(start, "cell <- round(p0); last <- the cell of the points just before p1; visit cell") \
@@ -53,7 +54,8 @@ template <NumberType Num, StepProbe Probe = NoProbe>
 void grid_traverse_3d(const Vec3<Num>& p0, const Vec3<Num>& p1, std::vector<Cell3>& out, Probe& probe) {
   using L = GridTraverse3d;
   const Vec3<Num> d = p1 - p0;
-  if constexpr (Probe::on) probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).num("dz", d.z).segment(p0, p1).keep();
+  if constexpr (Probe::on)
+    probe.step(L::delta, StepKind::init).num("dx", d.x).num("dy", d.y).num("dz", d.z).segment(p0, p1).keep();
   if (d.x == Num(0) && d.y == Num(0) && d.z == Num(0)) {
     if constexpr (Probe::on) probe.step(L::done, StepKind::done);
     return;
@@ -85,7 +87,16 @@ void grid_traverse_3d(const Vec3<Num>& p0, const Vec3<Num>& p1, std::vector<Cell
     t_max[a] = (Num(cell[a]) + Num(step[a] * 0.5) - p0[a]) / d[a];
   }
   if constexpr (Probe::on) {
-    probe.step(L::setup, StepKind::init).idx("step_x", step[0]).idx("step_y", step[1]).idx("step_z", step[2]).num("tDelta_x", t_delta[0]).num("tDelta_y", t_delta[1]).num("tDelta_z", t_delta[2]).idx("left_x", left[0]).idx("left_y", left[1]).idx("left_z", left[2]);
+    probe.step(L::setup, StepKind::init)
+        .idx("step_x", step[0])
+        .idx("step_y", step[1])
+        .idx("step_z", step[2])
+        .num("tDelta_x", t_delta[0])
+        .num("tDelta_y", t_delta[1])
+        .num("tDelta_z", t_delta[2])
+        .idx("left_x", left[0])
+        .idx("left_y", left[1])
+        .idx("left_z", left[2]);
     probe.step(L::first_exit, StepKind::init).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]).num("tMax_z", t_max[2]);
   }
   const std::int64_t bound = left[0] + left[1] + left[2];
@@ -95,7 +106,13 @@ void grid_traverse_3d(const Vec3<Num>& p0, const Vec3<Num>& p1, std::vector<Cell
     for (int a = 0; a < 3; ++a)
       if (left[a] > 0 && (first < 0 || t_max[a] < t_max[first])) first = a;
     const Num t = t_max[first];
-    if constexpr (Probe::on) probe.step(L::pick, StepKind::decide).num("t", t).num("tMax_x", t_max[0]).num("tMax_y", t_max[1]).num("tMax_z", t_max[2]).point(p0 + t * d);
+    if constexpr (Probe::on)
+      probe.step(L::pick, StepKind::decide)
+          .num("t", t)
+          .num("tMax_x", t_max[0])
+          .num("tMax_y", t_max[1])
+          .num("tMax_z", t_max[2])
+          .point(p0 + t * d);
     // Axes tied with t: a comparison, so a filtered type decides it surely or asks for exact.
     std::array<bool, 3> at_t{};
     for (int a = 0; a < 3; ++a) at_t[a] = a == first || (left[a] > 0 && !(t < t_max[a]));

@@ -55,14 +55,17 @@ template <class Num> struct KdEvent {
 
 struct KdBuild {
   static constexpr std::string_view id = "kd-build";
-  static constexpr std::string_view summary = "kd-tree by the surface area heuristic in O(N log N): events sorted once, split lists kept sorted";
+  static constexpr std::string_view summary =
+      "kd-tree by the surface area heuristic in O(N log N): events sorted once, split lists kept sorted";
 #define SW_LINES_KD_BUILD(X) \
   X(events, "for each primitive and axis k: a start and an end event at lo_k and hi_k, or one flat event if lo_k = hi_k") \
   X(sort, "sort each axis's events once, by (position, end < flat < start, id)") \
   X(root, "root <- a node whose cell is the bounds of all primitives; push it") \
   X(pop, "while a node is pending: take the last pushed; A <- its cell's half area, N <- its primitives") \
   X(sweep, "    for each axis k, sweep its events in order; at each position p strictly inside the cell:") \
-  X(best, "        C(p) <- lambda (K_T A + K_I (A_L N_L + A_R N_R)); keep the least, the first of equals   -- N_L: lo_k <= p, N_R: hi_k >= p") \
+  X(best, \
+    "        C(p) <- lambda (K_T A + K_I (A_L N_L + A_R N_R)); keep the least, the first of equals   -- N_L: lo_k <= p, N_R: " \
+    "hi_k >= p") \
   X(leaf, "    if no C(p) < K_I N A, or depth = max depth, or N <= 1: the node is a leaf; next") \
   X(classify, "    left if lo_k <= p, right if hi_k >= p; flat at p: the cheaper side (points) or both (triangles)") \
   X(split, "    split every axis's events into the children's lists in order: they stay sorted, nothing is re-sorted") \
@@ -137,7 +140,11 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
     const int depth = tree.nodes[id].depth;
     const Num a = cell.half_area(), nn(static_cast<int>(cur.count));
     if constexpr (Probe::on)
-      probe.step(L::pop, StepKind::visit).idx("node", id).idx("n", static_cast<std::int64_t>(cur.count)).idx("depth", depth).num("A", a)
+      probe.step(L::pop, StepKind::visit)
+          .idx("node", id)
+          .idx("n", static_cast<std::int64_t>(cur.count))
+          .idx("depth", depth)
+          .num("A", a)
           .node(id, tree.nodes[id].parent, cell.lo, cell.hi);
     bool found = false, flat_left = true;
     int axis = 0;
@@ -149,7 +156,7 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
       Num best_k{}, pos_k{};
       std::size_t nl_k = 0, nr_k = 0;
       std::size_t below = 0, above = cur.count;  // N_L and N_R before the position p
-      for (std::size_t i = 0; i < e.size();) {  // bounded: i grows at each position
+      for (std::size_t i = 0; i < e.size();) {   // bounded: i grows at each position
         const Num p = e[i].pos;
         std::size_t ends = 0, flats = 0, starts = 0;
         for (; i < e.size() && e[i].pos == p; ++i) (e[i].type == Ev::end ? ends : e[i].type == Ev::flat ? flats : starts)++;
@@ -175,7 +182,10 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
       if constexpr (Probe::on) {
         auto& s = probe.step(L::best, StepKind::decide).idx("axis", k).idx("found", found_k);
         if (found_k) {
-          s.num("p", pos_k).num("cost", best_k).idx("n_left", static_cast<std::int64_t>(nl_k)).idx("n_right", static_cast<std::int64_t>(nr_k));
+          s.num("p", pos_k)
+              .num("cost", best_k)
+              .idx("n_left", static_cast<std::int64_t>(nl_k))
+              .idx("n_right", static_cast<std::int64_t>(nr_k));
           const Box<Num, D> face = kd_cut(kd_cut(cell, k, pos_k, true), k, pos_k, false);
           if constexpr (D == 2) s.segment(face.lo, face.hi).label("cost").value(best_k);
           else s.box(face.lo, face.hi).label("cost").value(best_k);
@@ -192,8 +202,13 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
       ++tree.leaves, tree.refs += node.prims.size();
       tree.depth = std::max(tree.depth, static_cast<std::size_t>(depth));
       if constexpr (Probe::on)
-        probe.step(L::leaf, StepKind::advance).idx("node", id).idx("n", static_cast<std::int64_t>(cur.count)).num("leaf_cost", leaf_cost).idx("found", found)
-            .node(id, node.parent, cell.lo, cell.hi).keep();
+        probe.step(L::leaf, StepKind::advance)
+            .idx("node", id)
+            .idx("n", static_cast<std::int64_t>(cur.count))
+            .num("leaf_cost", leaf_cost)
+            .idx("found", found)
+            .node(id, node.parent, cell.lo, cell.hi)
+            .keep();
       continue;
     }
     for (const Ev& x : cur.ev[axis]) {
@@ -203,8 +218,14 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
       else side[x.prim] = (bx.lo[axis] <= pos ? 1 : 0) | (pos <= bx.hi[axis] ? 2 : 0);
     }
     if constexpr (Probe::on)
-      probe.step(L::classify, StepKind::decide).idx("axis", axis).num("p", pos).num("cost", best).num("leaf_cost", leaf_cost)
-          .idx("n_left", static_cast<std::int64_t>(best_l)).idx("n_right", static_cast<std::int64_t>(best_r)).idx("flat_left", flat_left);
+      probe.step(L::classify, StepKind::decide)
+          .idx("axis", axis)
+          .num("p", pos)
+          .num("cost", best)
+          .num("leaf_cost", leaf_cost)
+          .idx("n_left", static_cast<std::int64_t>(best_l))
+          .idx("n_right", static_cast<std::int64_t>(best_r))
+          .idx("flat_left", flat_left);
     List lo, hi;
     for (int k = 0; k < D; ++k) {
       for (const Ev& x : cur.ev[k]) {
@@ -214,7 +235,10 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
       tree.events_touched += cur.ev[k].size();
       cur.ev[k] = {};
     }
-    if constexpr (Probe::on) probe.step(L::split, StepKind::advance).idx("events_left", static_cast<std::int64_t>(lo[0].size())).idx("events_right", static_cast<std::int64_t>(hi[0].size()));
+    if constexpr (Probe::on)
+      probe.step(L::split, StepKind::advance)
+          .idx("events_left", static_cast<std::int64_t>(lo[0].size()))
+          .idx("events_right", static_cast<std::int64_t>(hi[0].size()));
     const auto l = static_cast<std::int32_t>(tree.nodes.size()), r = l + 1;
     tree.nodes[id].left = l, tree.nodes[id].right = r, tree.nodes[id].axis = static_cast<std::int8_t>(axis);
     tree.nodes[id].split = pos, tree.nodes[id].flat_left = flat_left;
@@ -222,12 +246,20 @@ KdTree<Num, D> kd_build(const std::vector<Box<Num, D>>& b, bool points, Probe& p
     tree.nodes.push_back({lc, id, -1, -1, depth + 1, -1, true, Num(0), {}});
     tree.nodes.push_back({rc, id, -1, -1, depth + 1, -1, true, Num(0), {}});
     if constexpr (Probe::on)
-      probe.step(L::children, StepKind::advance).idx("left", l).idx("right", r).node(l, id, lc.lo, lc.hi).keep().node(r, id, rc.lo, rc.hi).keep();
+      probe.step(L::children, StepKind::advance)
+          .idx("left", l)
+          .idx("right", r)
+          .node(l, id, lc.lo, lc.hi)
+          .keep()
+          .node(r, id, rc.lo, rc.hi)
+          .keep();
     pending.push_back({r, best_r, std::move(hi)});
     pending.push_back({l, best_l, std::move(lo)});
   }
   if constexpr (Probe::on)
-    probe.step(L::done, StepKind::done).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("leaves", static_cast<std::int64_t>(tree.leaves))
+    probe.step(L::done, StepKind::done)
+        .idx("nodes", static_cast<std::int64_t>(tree.nodes.size()))
+        .idx("leaves", static_cast<std::int64_t>(tree.leaves))
         .idx("depth", static_cast<std::int64_t>(tree.depth));
   return tree;
 }

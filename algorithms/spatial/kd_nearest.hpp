@@ -22,15 +22,20 @@ template <class Num> struct KdNearestResult {
 
 struct KdNearest {
   static constexpr std::string_view id = "kd-nearest";
-  static constexpr std::string_view summary = "k nearest points through a kd-tree: near child first, far cells pruned by exact squared distance";
+  static constexpr std::string_view summary =
+      "k nearest points through a kd-tree: near child first, far cells pruned by exact squared distance";
 #define SW_LINES_KD_NEAREST(X) \
   X(build, "build the kd-tree over the points with kd-build") \
   X(push, "push (root, d2 of q to the root cell)   -- d2 to a cell: the sum over axes of (the gap outside [lo_k, hi_k])^2") \
   X(pop, "while the stack is not empty: pop (node, d2_cell)") \
-  X(prune, "    if d2_cell > r^2, or k are held and d2_cell > the largest held d2: skip the node   -- equal may still tie by id") \
-  X(children, "    inner, plane x_k = p: push the far child, then the near one (q's side; left if q_k = p), each with its cell's d2") \
+  X(prune, \
+    "    if d2_cell > r^2, or k are held and d2_cell > the largest held d2: skip the node   -- equal may still tie by id") \
+  X(children, \
+    "    inner, plane x_k = p: push the far child, then the near one (q's side; left if q_k = p), each with its cell's d2") \
   X(point, "    leaf: for each point i: d2 <- |p_i - q|^2") \
-  X(take, "        if d2 <= r^2 and (fewer than k are held or (d2, i) < the largest held): hold (d2, i), dropping the largest beyond k") \
+  X(take, \
+    "        if d2 <= r^2 and (fewer than k are held or (d2, i) < the largest held): hold (d2, i), dropping the largest beyond " \
+    "k") \
   X(done, "the held points, sorted by (d2, id)")
   SW_LISTING("kd-tree k nearest", SW_LINES_KD_NEAREST)
 #undef SW_LINES_KD_NEAREST
@@ -56,8 +61,8 @@ template <class Num, int D> Num kd_point_d2(const VecN<Num, D>& p, const VecN<Nu
 // kd_build's over these points; 1 <= k <= pts.size().
 // r2, if given, bounds the search: only points with d2 <= r2 are held (the photon map's radius).
 template <NumberType Num, int D, StepProbe Probe = NoProbe>
-KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vector<VecN<Num, D>>& pts, const VecN<Num, D>& q, std::size_t k, Probe& probe,
-                                     const std::optional<Num>& r2 = std::nullopt) {
+KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vector<VecN<Num, D>>& pts, const VecN<Num, D>& q,
+                                     std::size_t k, Probe& probe, const std::optional<Num>& r2 = std::nullopt) {
   using L = KdNearest;
   using Held = std::pair<Num, std::int32_t>;
   // (d2, id) order; the heap's front is the largest held.
@@ -82,7 +87,10 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
     const KdNode<Num, D>& nd = tree.nodes[e.node];
     ++out.nodes_visited;
     if constexpr (Probe::on) {
-      auto& s = probe.step(L::pop, StepKind::visit).idx("node", e.node).num("d2_cell", e.d2).node(e.node, nd.parent, nd.cell.lo, nd.cell.hi);
+      auto& s = probe.step(L::pop, StepKind::visit)
+                    .idx("node", e.node)
+                    .num("d2_cell", e.d2)
+                    .node(e.node, nd.parent, nd.cell.lo, nd.cell.hi);
       record_stack(s, stack);
     }
     if (heap.size() == k || r2) {
@@ -99,19 +107,25 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
       const Num dn = kd_cell_d2<Num, D>(tree.nodes[near].cell, q), df = kd_cell_d2<Num, D>(tree.nodes[far].cell, q);
       stack.push_back({far, df});
       stack.push_back({near, dn});
-      if constexpr (Probe::on) probe.step(L::children, StepKind::advance).idx("near", near).idx("far", far).num("d2_near", dn).num("d2_far", df);
+      if constexpr (Probe::on)
+        probe.step(L::children, StepKind::advance).idx("near", near).idx("far", far).num("d2_near", dn).num("d2_far", df);
       continue;
     }
     for (const std::int32_t i : nd.prims) {
       const Num d2 = kd_point_d2<Num, D>(pts[i], q);
       ++out.dist_tests;
-      if constexpr (Probe::on) probe.step(L::point, StepKind::visit).idx("i", i).num("d2", d2).point(pts[i]).segment(pts[i], q).value(d2);
+      if constexpr (Probe::on)
+        probe.step(L::point, StepKind::visit).idx("i", i).num("d2", d2).point(pts[i]).segment(pts[i], q).value(d2);
       const Held h{d2, i};
       if ((!r2 || !(*r2 < d2)) && (heap.size() < k || less(h, heap.front()))) {
         if (heap.size() == k) std::pop_heap(heap.begin(), heap.end(), less), heap.pop_back();
         heap.push_back(h);
         std::push_heap(heap.begin(), heap.end(), less);
-        if constexpr (Probe::on) probe.step(L::take, StepKind::hit).idx("i", i).idx("held", static_cast<std::int64_t>(heap.size())).num("worst", heap.front().first);
+        if constexpr (Probe::on)
+          probe.step(L::take, StepKind::hit)
+              .idx("i", i)
+              .idx("held", static_cast<std::int64_t>(heap.size()))
+              .num("worst", heap.front().first);
       }
     }
   }
@@ -136,7 +150,9 @@ KdNearestResult<Num> kd_nearest(const std::vector<VecN<Num, D>>& pts, const VecN
     return kd_build<Num, D>(bounds, true, probe);
   }();
   if constexpr (Probe::on) {
-    auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
+    auto& s = probe.step(L::build, StepKind::init)
+                  .idx("nodes", static_cast<std::int64_t>(tree.nodes.size()))
+                  .idx("depth", static_cast<std::int64_t>(tree.depth));
     s.point(q).label("q").keep();
     for (const auto& p : pts) s.point(p).keep();  // the build's own items end with it
   }

@@ -21,14 +21,16 @@ template <class Num> using KdHit = TreeHit<Num>;
 
 struct KdTraverse {
   static constexpr std::string_view id = "kd-traverse";
-  static constexpr std::string_view summary = "Ray through a kd-tree: front to back, t-interval clipping, early exit; closest hit, ties by id";
+  static constexpr std::string_view summary =
+      "Ray through a kd-tree: front to back, t-interval clipping, early exit; closest hit, ties by id";
 #define SW_LINES_KD_TRAVERSE(X) \
   X(build, "build the kd-tree over the triangles' bounds with kd-build") \
   X(clip, "[t0, t1] <- the ray's interval in the root cell, with ray-box (a miss: no hit); t0 <- max(t0, 0)") \
   X(push, "push (root, t0, t1); best <- none") \
   X(pop, "while the stack is not empty: pop (node, t0, t1)") \
   X(descend, "    while the node is inner, with plane x_k = p:") \
-  X(parallel, "        if d_k = 0: node <- left if o_k <= p, else right   -- in the plane, both sides hold what the ray can hit") \
+  X(parallel, \
+    "        if d_k = 0: node <- left if o_k <= p, else right   -- in the plane, both sides hold what the ray can hit") \
   X(cross, "        t_s <- (p - o_k) / d_k; first, second <- left, right if d_k > 0, else right, left") \
   X(one, "        if t_s >= t1: node <- first; else if t_s <= t0: node <- second") \
   X(both, "        else: push (second, t_s, t1); node <- first; t1 <- t_s") \
@@ -51,7 +53,8 @@ template <class Step, class Num> void kd_record_stack(Step& s, const KdTree<Num,
 // The walk over a built tree (kd_traverse below builds it first). Precondition: the tree is
 // kd_build's over these triangles' bounds; r.d != 0.
 template <NumberType Num, StepProbe Probe = NoProbe>
-KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r, Probe& probe) {
+KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::array<Vec3<Num>, 3>>& tris,
+                            const ray::Ray3<Num>& r, Probe& probe) {
   using L = KdTraverse;
   KdHit<Num> out;
   const Box<Num, 3>& root = tree.nodes[0].cell;
@@ -82,7 +85,11 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
     stack.pop_back();
     if constexpr (Probe::on) {
       const auto& c = tree.nodes[e.node].cell;
-      auto& s = probe.step(L::pop, StepKind::visit).idx("node", e.node).num("t0", e.t0).num("t1", e.t1).node(e.node, tree.nodes[e.node].parent, c.lo, c.hi);
+      auto& s = probe.step(L::pop, StepKind::visit)
+                    .idx("node", e.node)
+                    .num("t0", e.t0)
+                    .num("t1", e.t1)
+                    .node(e.node, tree.nodes[e.node].parent, c.lo, c.hi);
       kd_record_stack(s, tree, stack);
       s.segment(Vec3<Num>(r.o + e.t0 * r.d), Vec3<Num>(r.o + e.t1 * r.d)).label("[t0, t1]");
     }
@@ -93,12 +100,19 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
       std::int32_t next;
       if (num::sign(r.d[k]) == 0) {
         next = r.o[k] <= nd.split ? nd.left : nd.right;
-        if constexpr (Probe::on) probe.step(L::parallel, StepKind::decide).idx("axis", k).num("p", nd.split).idx("left", next == nd.left);
+        if constexpr (Probe::on)
+          probe.step(L::parallel, StepKind::decide).idx("axis", k).num("p", nd.split).idx("left", next == nd.left);
       } else {
         const Num ts = (nd.split - r.o[k]) / r.d[k];
         const bool up = r.d[k] > zero;
         const std::int32_t first = up ? nd.left : nd.right, second = up ? nd.right : nd.left;
-        if constexpr (Probe::on) probe.step(L::cross, StepKind::decide).idx("axis", k).num("p", nd.split).num("t_s", ts).idx("first", first).idx("second", second);
+        if constexpr (Probe::on)
+          probe.step(L::cross, StepKind::decide)
+              .idx("axis", k)
+              .num("p", nd.split)
+              .num("t_s", ts)
+              .idx("first", first)
+              .idx("second", second);
         if (!(ts < e.t1) || !(e.t0 < ts)) {  // the interval lies on one side of the plane
           next = !(ts < e.t1) ? first : second;
           if constexpr (Probe::on) probe.step(L::one, StepKind::advance).idx("node", next);
@@ -116,7 +130,11 @@ KdHit<Num> kd_traverse_tree(const KdTree<Num, 3>& tree, const std::vector<std::a
       ++out.nodes_visited;
       if constexpr (Probe::on) {
         const auto& c = tree.nodes[e.node].cell;
-        probe.step(L::descend, StepKind::visit).idx("node", e.node).num("t0", e.t0).num("t1", e.t1).node(e.node, tree.nodes[e.node].parent, c.lo, c.hi);
+        probe.step(L::descend, StepKind::visit)
+            .idx("node", e.node)
+            .num("t0", e.t0)
+            .num("t1", e.t1)
+            .node(e.node, tree.nodes[e.node].parent, c.lo, c.hi);
       }
     }
     for (const std::int32_t i : tree.nodes[e.node].prims) keep_closest<L>(out, leaf_test<L>(out, tris, r, i, probe), i, r, probe);
@@ -141,7 +159,9 @@ KdHit<Num> kd_traverse(const std::vector<std::array<Vec3<Num>, 3>>& tris, const 
     return kd_build<Num, 3>(bounds, false, probe);
   }();
   if constexpr (Probe::on) {
-    auto& s = probe.step(L::build, StepKind::init).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
+    auto& s = probe.step(L::build, StepKind::init)
+                  .idx("nodes", static_cast<std::int64_t>(tree.nodes.size()))
+                  .idx("depth", static_cast<std::int64_t>(tree.depth));
     s.ray(r.o, r.d).keep();
     for (const auto& t : tris) s.triangle(t[0], t[1], t[2]).keep();
   }

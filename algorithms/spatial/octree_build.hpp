@@ -49,10 +49,12 @@ template <NumberType Num> bool triangle_meets_cell(const std::array<Vec3<Num>, 3
 
 struct OctreeBuild {
   static constexpr std::string_view id = "octree-build";
-  static constexpr std::string_view summary = "Octree build over points or triangles: split a cell into 8 while it holds more than capacity items";
+  static constexpr std::string_view summary =
+      "Octree build over points or triangles: split a cell into 8 while it holds more than capacity items";
 #define SW_SPATIAL_OCTREE_BUILD(X) \
   X(root, "root <- the bounding box (closed) of the points or triangles, holding every item; stack <- [root]") \
-  X(visit, "pop a node N until the stack is empty; if |N| <= capacity, depth(N) = max_depth or the budget is spent: N stays a leaf") \
+  X(visit, \
+    "pop a node N until the stack is empty; if |N| <= capacity, depth(N) = max_depth or the budget is spent: N stays a leaf") \
   X(split, "mid <- (lo + hi) / 2; child c of N gets [lo_a, mid_a] or [mid_a, hi_a] by bit a of c") \
   X(place_point, "    a point p goes to child c = sum of 2^a over the axes with p_a >= mid_a    -- one child") \
   X(place_triangle, "    a triangle T goes to every child whose closed cell it meets (13 separating axes)") \
@@ -71,8 +73,9 @@ template <class Num> struct OctreeItems {
 // Preconditions: one list is non-empty; capacity >= 1; max_depth >= 0. A node is split only if the
 // references placed so far plus the most it can place (1 per point, 8 per triangle) stay within
 // max_refs, so the work is bounded for any input (e.g. many copies of one large triangle).
-template <NumberType Num, StepProbe Probe = NoProbe>
-CellTree<Num, 3> octree_build(const OctreeItems<Num>& in, std::size_t capacity, int max_depth, std::size_t max_refs, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> CellTree<Num, 3> octree_build(const OctreeItems<Num>& in,
+                                                                                   std::size_t capacity, int max_depth,
+                                                                                   std::size_t max_refs, Probe& probe) {
   using L = OctreeBuild;
   const bool tris = in.points.empty();
   const std::size_t count = tris ? in.triangles.size() : in.points.size();
@@ -84,7 +87,10 @@ CellTree<Num, 3> octree_build(const OctreeItems<Num>& in, std::size_t capacity, 
   for (std::size_t i = 0; i < count; ++i) root.items.push_back(static_cast<std::int32_t>(i));
   tree.nodes.push_back(root);
   if constexpr (Probe::on) {
-    probe.step(L::root, StepKind::init).idx("items", static_cast<std::int64_t>(count)).node(0, -1, root.cell.lo, root.cell.hi).keep();
+    probe.step(L::root, StepKind::init)
+        .idx("items", static_cast<std::int64_t>(count))
+        .node(0, -1, root.cell.lo, root.cell.hi)
+        .keep();
     for (const auto& p : in.points) probe.point(p).keep();
     for (const auto& t : in.triangles) probe.triangle(t[0], t[1], t[2]).keep();
   }
@@ -98,7 +104,13 @@ CellTree<Num, 3> octree_build(const OctreeItems<Num>& in, std::size_t capacity, 
     const std::size_t size = tree.nodes[n].items.size();
     const bool over = size > capacity && depth < max_depth;
     const bool in_budget = refs + (tris ? 8 : 1) * size <= max_refs;
-    if constexpr (Probe::on) probe.step(L::visit, StepKind::visit).idx("node", n).idx("count", static_cast<std::int64_t>(size)).idx("depth", depth).idx("split", over && in_budget).node(n, tree.nodes[n].parent, cell.lo, cell.hi);
+    if constexpr (Probe::on)
+      probe.step(L::visit, StepKind::visit)
+          .idx("node", n)
+          .idx("count", static_cast<std::int64_t>(size))
+          .idx("depth", depth)
+          .idx("split", over && in_budget)
+          .node(n, tree.nodes[n].parent, cell.lo, cell.hi);
     if (!over || !in_budget) {
       tree.budget_stops += over;
       if (tree.depth < static_cast<std::size_t>(depth)) tree.depth = static_cast<std::size_t>(depth);
@@ -118,19 +130,29 @@ CellTree<Num, 3> octree_build(const OctreeItems<Num>& in, std::size_t capacity, 
       if (!tris) {
         const int c = child_of<Num, 3>(in.points[i], mid);
         tree.nodes[first + c].items.push_back(i), ++refs;
-        if constexpr (Probe::on) probe.step(L::place_point, StepKind::decide).idx("point", i).idx("child", first + c).point(in.points[i]);
+        if constexpr (Probe::on)
+          probe.step(L::place_point, StepKind::decide).idx("point", i).idx("child", first + c).point(in.points[i]);
         continue;
       }
       std::int64_t mask = 0;
       for (int c = 0; c < 8; ++c)
-        if (triangle_meets_cell(in.triangles[i], tree.nodes[first + c].cell)) tree.nodes[first + c].items.push_back(i), ++refs, mask |= 1 << c;
+        if (triangle_meets_cell(in.triangles[i], tree.nodes[first + c].cell))
+          tree.nodes[first + c].items.push_back(i), ++refs, mask |= 1 << c;
       const auto& t = in.triangles[i];
-      if constexpr (Probe::on) probe.step(L::place_triangle, StepKind::decide).idx("triangle", i).idx("children", mask).triangle(t[0], t[1], t[2]);
+      if constexpr (Probe::on)
+        probe.step(L::place_triangle, StepKind::decide).idx("triangle", i).idx("children", mask).triangle(t[0], t[1], t[2]);
     }
     for (int c = 7; c >= 0; --c) stack.push_back(first + c);
-    if constexpr (Probe::on) probe.step(L::push, StepKind::advance).idx("stack", static_cast<std::int64_t>(stack.size())).idx("refs", static_cast<std::int64_t>(refs));
+    if constexpr (Probe::on)
+      probe.step(L::push, StepKind::advance)
+          .idx("stack", static_cast<std::int64_t>(stack.size()))
+          .idx("refs", static_cast<std::int64_t>(refs));
   }
-  if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth)).idx("budget_stops", static_cast<std::int64_t>(tree.budget_stops));
+  if constexpr (Probe::on)
+    probe.step(L::done, StepKind::done)
+        .idx("nodes", static_cast<std::int64_t>(tree.nodes.size()))
+        .idx("depth", static_cast<std::int64_t>(tree.depth))
+        .idx("budget_stops", static_cast<std::int64_t>(tree.budget_stops));
   return tree;
 }
 

@@ -35,7 +35,10 @@ CellTree<Num, 2> quadtree_build(const std::vector<Vec2<Num>>& points, std::size_
   for (std::size_t i = 0; i < points.size(); ++i) root.items.push_back(static_cast<std::int32_t>(i));
   tree.nodes.push_back(root);
   if constexpr (Probe::on) {
-    probe.step(L::root, StepKind::init).idx("points", static_cast<std::int64_t>(points.size())).node(0, -1, root.cell.lo, root.cell.hi).keep();
+    probe.step(L::root, StepKind::init)
+        .idx("points", static_cast<std::int64_t>(points.size()))
+        .node(0, -1, root.cell.lo, root.cell.hi)
+        .keep();
     for (const auto& p : points) probe.point(p).keep();
   }
   std::vector<std::int32_t> stack{0};
@@ -47,7 +50,13 @@ CellTree<Num, 2> quadtree_build(const std::vector<Vec2<Num>>& points, std::size_
     const int depth = tree.nodes[n].depth;
     const std::int32_t parent = tree.nodes[n].parent;
     const bool split = tree.nodes[n].items.size() > capacity && depth < max_depth;
-    if constexpr (Probe::on) probe.step(L::visit, StepKind::visit).idx("node", n).idx("count", static_cast<std::int64_t>(tree.nodes[n].items.size())).idx("depth", depth).idx("split", split).node(n, parent, cell.lo, cell.hi);
+    if constexpr (Probe::on)
+      probe.step(L::visit, StepKind::visit)
+          .idx("node", n)
+          .idx("count", static_cast<std::int64_t>(tree.nodes[n].items.size()))
+          .idx("depth", depth)
+          .idx("split", split)
+          .node(n, parent, cell.lo, cell.hi);
     if (!split) {
       if (tree.depth < static_cast<std::size_t>(depth)) tree.depth = static_cast<std::size_t>(depth);
       continue;
@@ -69,7 +78,10 @@ CellTree<Num, 2> quadtree_build(const std::vector<Vec2<Num>>& points, std::size_
     for (int c = 3; c >= 0; --c) stack.push_back(first + c);
     if constexpr (Probe::on) probe.step(L::push, StepKind::advance).idx("stack", static_cast<std::int64_t>(stack.size()));
   }
-  if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("nodes", static_cast<std::int64_t>(tree.nodes.size())).idx("depth", static_cast<std::int64_t>(tree.depth));
+  if constexpr (Probe::on)
+    probe.step(L::done, StepKind::done)
+        .idx("nodes", static_cast<std::int64_t>(tree.nodes.size()))
+        .idx("depth", static_cast<std::int64_t>(tree.depth));
   return tree;
 }
 

@@ -17,7 +17,8 @@ namespace sw::spatial {
 
 struct RayTriangles {
   static constexpr std::string_view id = "ray-triangles";
-  static constexpr std::string_view summary = "Ray against every triangle (brute force) with a chosen test: closest hit, ties by id";
+  static constexpr std::string_view summary =
+      "Ray against every triangle (brute force) with a chosen test: closest hit, ties by id";
 #define SW_LINES_RAY_TRIANGLES(X) \
   X(start, "best <- none") \
   X(test, "for each triangle i, in order: test it (mt, barycentric or watertight)") \
@@ -49,8 +50,9 @@ TreeHit<Num> ray_triangles_with(const std::vector<std::array<Vec3<Num>, 3>>& tri
   return out;
 }
 
-template <NumberType Num, StepProbe Probe = NoProbe>
-TreeHit<Num> ray_triangles(const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r, TriangleTest test, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> TreeHit<Num> ray_triangles(const std::vector<std::array<Vec3<Num>, 3>>& tris,
+                                                                                const ray::Ray3<Num>& r, TriangleTest test,
+                                                                                Probe& probe) {
   switch (test) {
     case TriangleTest::mt: return ray_triangles_with<ray::RayTriangleMT>(tris, r, probe);
     case TriangleTest::barycentric: return ray_triangles_with<ray::RayTriangleBarycentric>(tris, r, probe);

@@ -31,10 +31,12 @@ ray::TriangleHit<Num> leaf_test(TreeHit<Num>& best, const std::vector<std::array
 }
 
 // Hit h of triangle i becomes the best, with a step on L's line `line` (keep, or an any-hit walk's stop).
-template <class L, NumberType Num, StepProbe Probe>
-void take_hit(TreeHit<Num>& best, const ray::TriangleHit<Num>& h, std::int32_t i, const ray::Ray3<Num>& r, typename L::Line line, Probe& probe) {
+template <class L, NumberType Num, StepProbe Probe> void take_hit(TreeHit<Num>& best, const ray::TriangleHit<Num>& h,
+                                                                  std::int32_t i, const ray::Ray3<Num>& r, typename L::Line line,
+                                                                  Probe& probe) {
   best.hit = true, best.prim = i, best.t = h.t, best.b = h.b;
-  if constexpr (Probe::on) probe.step(line, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
+  if constexpr (Probe::on)
+    probe.step(line, StepKind::hit).idx("prim", i).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
 }
 
 // The closest-hit rule: h of triangle i becomes the best when it is hit and (t, i) < (t_best, i_best),

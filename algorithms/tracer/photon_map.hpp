@@ -32,7 +32,8 @@ inline Vec3<double> caustic_irradiance(const PhotonMap& map, const Vec3<double>&
   const auto near = spatial::kd_nearest_tree<double, 3>(map.tree, map.at, p, static_cast<std::size_t>(map.gather), none, max_r2);
   Vec3<double> sum{};
   std::size_t taken = 0;
-  while (taken < near.ids.size() && near.d2[taken] <= max_r2) sum = sum + map.power[static_cast<std::size_t>(near.ids[taken])], ++taken;  // sorted by d2
+  while (taken < near.ids.size() && near.d2[taken] <= max_r2)
+    sum = sum + map.power[static_cast<std::size_t>(near.ids[taken])], ++taken;  // sorted by d2
   if (taken == 0) return {};
   const double r2 = static_cast<std::int64_t>(taken) == map.gather && near.d2[taken - 1] > 0 ? near.d2[taken - 1] : max_r2;
   return (1 / (3.141592653589793 * r2)) * sum;

@@ -15,9 +15,12 @@ namespace sw::tracer {
 
 struct PhotonTrace {
   static constexpr std::string_view id = "photon-trace";
-  static constexpr std::string_view summary = "Caustic photons: emitted from the lights, bounced by mirrors and glass (Russian roulette), stored on diffuse surfaces";
+  static constexpr std::string_view summary =
+      "Caustic photons: emitted from the lights, bounced by mirrors and glass (Russian roulette), stored on diffuse surfaces";
 #define SW_TRACER_PHOTON_TRACE(X) \
-  X(emit, "for each photon k of light i: a direction in the cone around a mirror or glass object, from its seeded sequence; power <- I Omega / (n m)") \
+  X(emit, \
+    "for each photon k of light i: a direction in the cone around a mirror or glass object, from its seeded sequence; power <- " \
+    "I Omega / (n m)") \
   X(hit, "    hit <- the closest hit (scene-hit); none: the photon is lost; the first: power <- power d^2 / att(d)") \
   X(store, "    if it has bounced off a mirror or glass and the surface is diffuse: store (P, power)") \
   X(roulette, "    u <- its next number; u < kr + kt F: reflect; u < kr + kt: transmit (not under TIR); else: absorbed") \
@@ -30,14 +33,13 @@ namespace photon_detail {
 inline double unit_random(std::uint64_t& state) { return double(splitmix64(state) >> 11) * 0x1p-53; }
 // A direction with cos(angle to axis) uniform in [c0, 1]: uniform over that cap of the sphere.
 inline Vec3<double> in_cap(const Vec3<double>& axis, double c0, std::uint64_t& state) {
-  const double c = c0 + (1 - c0) * unit_random(state), s = std::sqrt(std::max(0.0, 1 - c * c)), phi = 6.283185307179586 * unit_random(state);
+  const double c = c0 + (1 - c0) * unit_random(state), s = std::sqrt(std::max(0.0, 1 - c * c)),
+               phi = 6.283185307179586 * unit_random(state);
   const Vec3<double> w = unit3(axis), a = std::abs(w.x) > 0.5 ? Vec3<double>{0, 1, 0} : Vec3<double>{1, 0, 0};
   const Vec3<double> u = unit3(cross(a, w)), v = cross(w, u);
   return (s * std::cos(phi)) * u + (s * std::sin(phi)) * v + c * w;
 }
-inline bool diffuse(const TraceMaterial<double>& m) {
-  return m.texture >= 0 || !(m.shading.kd == Vec3<double>{});
-}
+inline bool diffuse(const TraceMaterial<double>& m) { return m.texture >= 0 || !(m.shading.kd == Vec3<double>{}); }
 }  // namespace photon_detail
 
 // Where a light aims its photons (Jensen's projection maps): the cones from the light around each
@@ -81,7 +83,9 @@ inline std::vector<EmitCone> emit_cones(const TraceScene<double>& s, const Vec3<
 }
 
 // Traces photons [first, last) of light li (n in all for that light), appending the stored ones.
-inline void trace_photons(const TraceScene<double>& s, std::size_t li, std::int64_t first, std::int64_t last, std::int64_t n, std::uint32_t seed, std::vector<Vec3<double>>& at, std::vector<Vec3<double>>& power, std::uint64_t& rays) {
+inline void trace_photons(const TraceScene<double>& s, std::size_t li, std::int64_t first, std::int64_t last, std::int64_t n,
+                          std::uint32_t seed, std::vector<Vec3<double>>& at, std::vector<Vec3<double>>& power,
+                          std::uint64_t& rays) {
   using namespace photon_detail;
   const lighting::Light<double>& l = s.lights[li];
   const bool spot = l.type == lighting::LightType::spot && !l.cone.all;

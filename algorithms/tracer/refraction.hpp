@@ -17,15 +17,16 @@
 namespace sw::tracer {
 
 template <class Num> struct Transmission {
-  bool tir = false;        // total internal reflection: no transmitted ray
-  bool guide_tir = false;  // the guide's test, n1/n2 sqrt(1 - c) >= 1 (a mistake: it needs 1 - c^2)
-  Num cos_i{}, fresnel{1}; // the cosine of incidence; Fresnel's reflectance (1 under TIR)
-  Vec3<Num> dir;           // the transmitted direction (unit), when !tir
+  bool tir = false;         // total internal reflection: no transmitted ray
+  bool guide_tir = false;   // the guide's test, n1/n2 sqrt(1 - c) >= 1 (a mistake: it needs 1 - c^2)
+  Num cos_i{}, fresnel{1};  // the cosine of incidence; Fresnel's reflectance (1 under TIR)
+  Vec3<Num> dir;            // the transmitted direction (unit), when !tir
 };
 
 struct Refract {
   static constexpr std::string_view id = "refract";
-  static constexpr std::string_view summary = "Refraction: exact total-internal-reflection sign, Snell's direction, Fresnel's split";
+  static constexpr std::string_view summary =
+      "Refraction: exact total-internal-reflection sign, Snell's direction, Fresnel's split";
 #define SW_TRACER_REFRACT(X) \
   X(cosine, "c <- -d.N / (|d| |N|)                          -- N faces the incoming ray, so c > 0") \
   X(tir, "TIR <- n1^2 (|d|^2 |N|^2 - (d.N)^2) >= n2^2 |d|^2 |N|^2   -- sin^2(t) >= 1, an exact polynomial sign") \
@@ -37,21 +38,25 @@ struct Refract {
 };
 
 // d: the incoming direction; N: the normal facing it (d.N < 0); n1, n2 >= 1.
-template <NumberType Num, StepProbe Probe = NoProbe>
-Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N, const Num& n1, const Num& n2, lighting::Fresnel fresnel, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N,
+                                                                               const Num& n1, const Num& n2,
+                                                                               lighting::Fresnel fresnel, Probe& probe) {
   using L = Refract;
   Transmission<Num> out;
   const Vec3<Num> dn = lighting::unit(d), nn = lighting::unit(N);
   out.cos_i = -dot(dn, nn);
   const Num c = out.cos_i < Num(0) ? Num(0) : out.cos_i > Num(1) ? Num(1) : out.cos_i;
   if constexpr (Probe::on) probe.step(L::cosine, StepKind::init).num("c", c).ray(Vec3<Num>{}, dn).label("d");
-  out.tir = num::exact_sign([](const auto& D, const auto& M, const auto& m1, const auto& m2) {
-    const auto dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
-    return m1 * m1 * (dd * mm - dm * dm) - m2 * m2 * dd * mm;
-  }, d, N, n1, n2) >= 0;
+  out.tir = num::exact_sign(
+                [](const auto& D, const auto& M, const auto& m1, const auto& m2) {
+                  const auto dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
+                  return m1 * m1 * (dd * mm - dm * dm) - m2 * m2 * dd * mm;
+                },
+                d, N, n1, n2) >= 0;
   const Num eta = n1 / n2;
   out.guide_tir = eta * std::sqrt(std::max(Num(0), Num(1) - c)) >= Num(1);
-  if constexpr (Probe::on) probe.step(L::tir, StepKind::decide).idx("tir", out.tir).idx("guide_tir", out.guide_tir).num("eta", eta);
+  if constexpr (Probe::on)
+    probe.step(L::tir, StepKind::decide).idx("tir", out.tir).idx("guide_tir", out.guide_tir).num("eta", eta);
   if (out.tir) {
     out.fresnel = Num(1);
     if constexpr (Probe::on) probe.step(L::total, StepKind::miss).num("F", out.fresnel);
@@ -61,7 +66,8 @@ Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N, const Num& n1,
   const Num k = std::max(Num(0), Num(1) - eta * eta * (Num(1) - c * c));
   const Num cos_t = std::sqrt(k);
   out.dir = lighting::unit(Vec3<Num>(eta * dn + (eta * c - cos_t) * nn));
-  if constexpr (Probe::on) probe.step(L::direction, StepKind::advance).num("k", k).vec("T", out.dir).ray(Vec3<Num>{}, out.dir).label("T");
+  if constexpr (Probe::on)
+    probe.step(L::direction, StepKind::advance).num("k", k).vec("T", out.dir).ray(Vec3<Num>{}, out.dir).label("T");
   if (fresnel == lighting::Fresnel::schlick) {
     const Num outer = n1 <= n2 ? c : cos_t;  // Schlick's formula takes the angle on the rarer side
     out.fresnel = lighting::fresnel_schlick(outer, n1 <= n2 ? n2 / n1 : n1 / n2);

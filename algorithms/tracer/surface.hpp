@@ -85,7 +85,8 @@ template <class Num> Surface<Num> surface_at(const TraceObjects<Num>& s, const r
     }
     case Shape::triangle:
     case Shape::mesh: {
-      const Triangle3<Num>& v = o.shape == Shape::triangle ? o.v : s.meshes[static_cast<std::size_t>(o.mesh)].tris[static_cast<std::size_t>(h.prim)];
+      const Triangle3<Num>& v =
+          o.shape == Shape::triangle ? o.v : s.meshes[static_cast<std::size_t>(o.mesh)].tris[static_cast<std::size_t>(h.prim)];
       const Vec3<Num> p0 = h.b[0] * v[0], p1 = h.b[1] * v[1], p2 = h.b[2] * v[2];
       out.p = p0 + p1 + p2;
       out.err = gamma_bound<Num>(7) * (abs3(p0) + abs3(p1) + abs3(p2));

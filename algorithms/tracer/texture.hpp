@@ -26,19 +26,23 @@ class Noise {
     std::array<std::uint8_t, 256> p;
     std::iota(p.begin(), p.end(), std::uint8_t{0});
     std::uint64_t state = seed;
-    for (int i = 255; i > 0; --i) std::swap(p[static_cast<std::size_t>(i)], p[splitmix64(state) % static_cast<std::uint64_t>(i + 1)]);
+    for (int i = 255; i > 0; --i)
+      std::swap(p[static_cast<std::size_t>(i)], p[splitmix64(state) % static_cast<std::uint64_t>(i + 1)]);
     for (std::size_t i = 0; i < 512; ++i) perm_[i] = p[i & 255];
   }
   // In [-1, 1] roughly; 0 at integer points.
   double at(double x, double y, double z) const {
     const double fx = std::floor(x), fy = std::floor(y), fz = std::floor(z);
-    const int X = static_cast<int>(static_cast<std::int64_t>(fx) & 255), Y = static_cast<int>(static_cast<std::int64_t>(fy) & 255),
+    const int X = static_cast<int>(static_cast<std::int64_t>(fx) & 255),
+              Y = static_cast<int>(static_cast<std::int64_t>(fy) & 255),
               Z = static_cast<int>(static_cast<std::int64_t>(fz) & 255);
     x -= fx, y -= fy, z -= fz;
     const double u = fade(x), v = fade(y), w = fade(z);
     auto h = [&](int i) { return static_cast<int>(perm_[static_cast<std::size_t>(i)]); };
     const int A = h(X) + Y, AA = h(A) + Z, AB = h(A + 1) + Z, B = h(X + 1) + Y, BA = h(B) + Z, BB = h(B + 1) + Z;
-    return lerp(w, lerp(v, lerp(u, grad(h(AA), x, y, z), grad(h(BA), x - 1, y, z)), lerp(u, grad(h(AB), x, y - 1, z), grad(h(BB), x - 1, y - 1, z))),
+    return lerp(w,
+                lerp(v, lerp(u, grad(h(AA), x, y, z), grad(h(BA), x - 1, y, z)),
+                     lerp(u, grad(h(AB), x, y - 1, z), grad(h(BB), x - 1, y - 1, z))),
                 lerp(v, lerp(u, grad(h(AA + 1), x, y, z - 1), grad(h(BA + 1), x - 1, y, z - 1)),
                      lerp(u, grad(h(AB + 1), x, y - 1, z - 1), grad(h(BB + 1), x - 1, y - 1, z - 1))));
   }
@@ -51,7 +55,8 @@ class Noise {
   // The gradient by central differences (h = 1e-3 in noise space).
   Vec3<double> gradient(double x, double y, double z) const {
     const double h = 1e-3;
-    return {(at(x + h, y, z) - at(x - h, y, z)) / (2 * h), (at(x, y + h, z) - at(x, y - h, z)) / (2 * h), (at(x, y, z + h) - at(x, y, z - h)) / (2 * h)};
+    return {(at(x + h, y, z) - at(x - h, y, z)) / (2 * h), (at(x, y + h, z) - at(x, y - h, z)) / (2 * h),
+            (at(x, y, z + h) - at(x, y, z - h)) / (2 * h)};
   }
 
  private:
@@ -82,7 +87,8 @@ inline Vec3<double> mix(const Vec3<double>& a, const Vec3<double>& b, double t) 
 inline Vec3<double> texture_colour(const TraceTexture& t, double u, double v, const Vec3<double>& p) {
   switch (t.kind) {
     case TextureKind::checker: {
-      const auto parity = (static_cast<std::int64_t>(std::floor(u * t.scale)) + static_cast<std::int64_t>(std::floor(v * t.scale))) & 1;
+      const auto parity =
+          (static_cast<std::int64_t>(std::floor(u * t.scale)) + static_cast<std::int64_t>(std::floor(v * t.scale))) & 1;
       return t.colours[static_cast<std::size_t>(parity)];
     }
     case TextureKind::image: {

@@ -29,10 +29,10 @@ template <class Num> struct MeshData {
 template <class Num> struct Prim {
   Shape shape = Shape::sphere;
   int material = 0;
-  Vec3<Num> a, b;     // sphere: a = centre; plane: a = point, b = normal (front side); box: a = min, b = max
-  Num radius{};       // sphere
-  Triangle3<Num> v{}; // triangle (counter-clockwise seen from the front)
-  int mesh = -1;      // mesh: index into TraceScene::meshes
+  Vec3<Num> a, b;      // sphere: a = centre; plane: a = point, b = normal (front side); box: a = min, b = max
+  Num radius{};        // sphere
+  Triangle3<Num> v{};  // triangle (counter-clockwise seen from the front)
+  int mesh = -1;       // mesh: index into TraceScene::meshes
 };
 
 template <class Num> struct Hit {
@@ -45,7 +45,8 @@ template <class Num> struct Hit {
 
 struct SceneHit {
   static constexpr std::string_view id = "scene-hit";
-  static constexpr std::string_view summary = "A ray against every object of a scene in id order: closest hit (ties by id), or any hit before t_max";
+  static constexpr std::string_view summary =
+      "A ray against every object of a scene in id order: closest hit (ties by id), or any hit before t_max";
 #define SW_TRACER_SCENE_HIT(X) \
   X(start, "best <- none") \
   X(test, "for each object k, in order: its kind's test (sphere, plane, box, triangle; a mesh through bvh-traverse)") \
@@ -118,11 +119,13 @@ Hit<Num> object_hit(const TraceObjects<Num>& s, int k, const ray::Ray3<Num>& r, 
 }
 
 // The closest hit (any = false), or the first hit found with t < t_max (any = true).
-template <NumberType Num, StepProbe Probe = NoProbe>
-Hit<Num> scene_hit(const TraceObjects<Num>& s, const ray::Ray3<Num>& r, bool any, const Num& t_max, const Leaving& leaving, Probe& probe) {
+template <NumberType Num, StepProbe Probe = NoProbe> Hit<Num> scene_hit(const TraceObjects<Num>& s, const ray::Ray3<Num>& r,
+                                                                        bool any, const Num& t_max, const Leaving& leaving,
+                                                                        Probe& probe) {
   using L = SceneHit;
   Hit<Num> best;
-  if constexpr (Probe::on) probe.step(L::start, StepKind::init).ray(r.o, r.d).keep().idx("objects", std::int64_t(s.objects.size()));
+  if constexpr (Probe::on)
+    probe.step(L::start, StepKind::init).ray(r.o, r.d).keep().idx("objects", std::int64_t(s.objects.size()));
   for (std::size_t k = 0; k < s.objects.size(); ++k) {  // bounded by the object count
     const bool mine = static_cast<int>(k) == leaving.object;
     const Shape shape = s.objects[k].shape;
@@ -136,12 +139,22 @@ Hit<Num> scene_hit(const TraceObjects<Num>& s, const ray::Ray3<Num>& r, bool any
     if (!h.hit) continue;
     if (any) {
       if (h.t < t_max) {
-        if constexpr (Probe::on) probe.step(L::any, StepKind::hit).idx("k", std::int64_t(k)).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("occluder");
+        if constexpr (Probe::on)
+          probe.step(L::any, StepKind::hit)
+              .idx("k", std::int64_t(k))
+              .num("t", h.t)
+              .point(Vec3<Num>(r.o + h.t * r.d))
+              .label("occluder");
         return h;
       }
     } else if (!best.hit || h.t < best.t) {
       best = h;
-      if constexpr (Probe::on) probe.step(L::keep, StepKind::hit).idx("k", std::int64_t(k)).num("t", h.t).point(Vec3<Num>(r.o + h.t * r.d)).label("best");
+      if constexpr (Probe::on)
+        probe.step(L::keep, StepKind::hit)
+            .idx("k", std::int64_t(k))
+            .num("t", h.t)
+            .point(Vec3<Num>(r.o + h.t * r.d))
+            .label("best");
     }
   }
   if (any) best = {};

@@ -61,7 +61,8 @@ struct RayCounts {
   std::uint64_t shadow_blocked = 0;  // shadow rays that found an occluder
   std::uint64_t budget_stops = 0;    // secondary rays not cast because their pixel's budget was spent
   RayCounts& operator+=(const RayCounts& o) {
-    primary += o.primary, shadow += o.shadow, shadow_blocked += o.shadow_blocked, reflection += o.reflection, refraction += o.refraction, photon += o.photon, budget_stops += o.budget_stops;
+    primary += o.primary, shadow += o.shadow, shadow_blocked += o.shadow_blocked, reflection += o.reflection,
+        refraction += o.refraction, photon += o.photon, budget_stops += o.budget_stops;
     return *this;
   }
   std::uint64_t total() const { return primary + shadow + reflection + refraction + photon; }
@@ -69,7 +70,8 @@ struct RayCounts {
 
 struct Whitted {
   static constexpr std::string_view id = "whitted";
-  static constexpr std::string_view summary = "Whitted ray tracing: closest hit, shadow rays, local lighting, mirror and transmitted rays, as planned";
+  static constexpr std::string_view summary =
+      "Whitted ray tracing: closest hit, shadow rays, local lighting, mirror and transmitted rays, as planned";
 #define SW_TRACER_WHITTED(X) \
   X(closest, "hit <- the ray's closest hit (scene-hit)") \
   X(background, "if none: return the background colour") \
@@ -82,7 +84,9 @@ struct Whitted {
   X(split, "if refraction is planned: TIR, T, F <- refract(d, N, n1, n2); else F <- 0") \
   X(reflect, "wr <- kr + kt F; if reflection is planned: c <- c + wr trace(the mirror ray from P, depth + 1)") \
   X(transmit, "wt <- kt (1 - F); if refraction is planned and not TIR: c <- c + wt trace(T from P, depth + 1)") \
-  X(budget, "    a ray of weight > 0 is cast while the pixel's budget lasts; one of weight 0 adds nothing: cast only for --all-effects, within as many again") \
+  X(budget, \
+    "    a ray of weight > 0 is cast while the pixel's budget lasts; one of weight 0 adds nothing: cast only for " \
+    "--all-effects, within as many again") \
   X(done, "return c")
   SW_LISTING("Whitted ray tracer", SW_TRACER_WHITTED)
 #undef SW_TRACER_WHITTED
@@ -129,7 +133,11 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
       return scene_hit(s_, r, false, Num(0), from, probe_);
     }();
     if constexpr (Probe::on) {
-      auto& st = probe_.step(L::closest, h.hit ? StepKind::hit : StepKind::miss).idx("depth", depth).num("weight", weight).idx("object", h.object).num("t", h.t);
+      auto& st = probe_.step(L::closest, h.hit ? StepKind::hit : StepKind::miss)
+                     .idx("depth", depth)
+                     .num("weight", weight)
+                     .idx("object", h.object)
+                     .num("t", h.t);
       // The ray tree: each ray to its hit, labelled by depth; the primary also shows the scene.
       const char* label = kDepthLabels[depth < kDepthLabelCount ? depth : kDepthLabelCount - 1];
       if (h.hit) st.segment(r.o, Vec3<Num>(r.o + h.t * r.d)).label(label).keep();
@@ -146,15 +154,27 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
     const bool entering = dot(r.d, sf.n) < Num(0);  // the ray meets the front (outside)
     const Vec3<Num> nf = entering ? sf.n : Num(-1) * sf.n;
     if constexpr (Probe::on)
-      probe_.step(L::surface, StepKind::init).vec("P", sf.p).vec("err", sf.err).vec("N", nf).num("u", sf.u).num("v", sf.v).idx("entering", entering)
-          .point(sf.p).label("P").keep().segment(sf.p, Vec3<Num>(sf.p + nf)).label("N").keep();
+      probe_.step(L::surface, StepKind::init)
+          .vec("P", sf.p)
+          .vec("err", sf.err)
+          .vec("N", nf)
+          .num("u", sf.u)
+          .num("v", sf.v)
+          .idx("entering", entering)
+          .point(sf.p)
+          .label("P")
+          .keep()
+          .segment(sf.p, Vec3<Num>(sf.p + nf))
+          .label("N")
+          .keep();
     lighting::Material<Num> mat = m.shading;
     if (m.texture >= 0) {
       const Vec3<Num> tc = texture_colour(s_.textures[static_cast<std::size_t>(m.texture)], sf.u, sf.v, sf.p);
       mat.kd = tc, mat.ka = tc;
     }
     const Vec3<Num> ns = m.bump.on ? bumped(m.bump, nf, sf.p) : nf;
-    if constexpr (Probe::on) if (m.texture >= 0 || m.bump.on) probe_.step(L::texture, StepKind::init).colour("kd", mat.kd).vec("Ns", ns);
+    if constexpr (Probe::on)
+      if (m.texture >= 0 || m.bump.on) probe_.step(L::texture, StepKind::init).colour("kd", mat.kd).vec("Ns", ns);
     const Leaving here = s_.offset == Offset::robust ? Leaving{h.object, h.prim} : Leaving{};
     shading_.blocked = shadows(sf, ns, here);
     shading_.p = sf.p, shading_.n = ns, shading_.eye = r.o, shading_.material = mat;
@@ -227,7 +247,8 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
   // c <- c + w trace(the ray from the surface in direction dir). A ray of weight 0 (itself, or under
   // an ancestor of weight 0) adds nothing: only --all-effects casts it, from its own allowance, so
   // both plans spend the pixel's budget on the same rays.
-  void add(Vec3<Num>& c, const Num& w, const Num& weight, const Surface<Num>& sf, const Leaving& here, const Vec3<Num>& dir, int depth, std::uint64_t& count) {
+  void add(Vec3<Num>& c, const Num& w, const Num& weight, const Surface<Num>& sf, const Leaving& here, const Vec3<Num>& dir,
+           int depth, std::uint64_t& count) {
     const Num path = weight * w;
     std::int64_t& allowance = path > Num(0) ? budget_ : spare_;
     if (!(path > Num(0)) && !plan_.zero_weight) return;
@@ -246,8 +267,9 @@ template <NumberType Num, StepProbe Probe = NoProbe> class WhittedTracer {
   }
 
   // Labels of the ray tree's rays by depth (string literals: the recorder keeps the pointer).
-  static constexpr const char* kDepthLabels[] = {"ray", "primary", "depth 2", "depth 3", "depth 4", "depth 5", "depth 6", "depth 7", "depth 8",
-                                                 "depth 9", "depth 10", "depth 11", "depth 12", "depth 13", "depth 14", "depth 15", "depth 16"};
+  static constexpr const char* kDepthLabels[] = {"ray",      "primary",  "depth 2",  "depth 3",  "depth 4",  "depth 5",
+                                                 "depth 6",  "depth 7",  "depth 8",  "depth 9",  "depth 10", "depth 11",
+                                                 "depth 12", "depth 13", "depth 14", "depth 15", "depth 16"};
   static constexpr int kDepthLabelCount = int(sizeof kDepthLabels / sizeof *kDepthLabels);
   // The scene's objects as kept geometry (meshes by their BVH's root box).
   template <class Step> void record_objects(Step& st) const {
