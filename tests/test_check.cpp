@@ -210,3 +210,27 @@ TEST_CASE("check: a float trace's numbers are held to 2^-10 (1 + |exact|): withi
   CHECK(check(shifted(flat, d, "dy", 12)).status == 0);
   require_diverges(shifted(flat, d, "dy", 8), d - 1, "variable dy");
 }
+
+TEST_CASE("check: a step numbered out of sequence fails, content after the result is malformed", "[check]") {
+  const char* input = R"({"p0":[0.25,0.5],"p1":[30.75,9.5]})";
+  std::vector<Json> lines = trace_lines("dda-line", input, Numeric::f64);
+  REQUIRE(lines.size() > 22);
+  REQUIRE(check(lines).status == 0);
+  // Line 0 is the header: step 12 is line 13. Renumbered to 19, it is otherwise the right step.
+  std::vector<Json> renumbered = lines;
+  REQUIRE(renumbered[13]["step"] == 12);
+  renumbered[13]["step"] = 19;
+  const CheckReport r = check(renumbered);
+  INFO(r.message);
+  CHECK(r.status == 1);
+  CHECK_THAT(r.message, Catch::StartsWith("step 12 diverges") && Catch::Contains("numbered from 0, in order"));
+  // Anything after the result line: a second result, or a step.
+  for (const Json& extra : {lines.back(), lines[5]}) {
+    std::vector<Json> trailing = lines;
+    trailing.push_back(extra);
+    const CheckReport t = check(trailing);
+    INFO(t.message);
+    CHECK(t.status == 2);
+    CHECK_THAT(t.message, Catch::Contains("content after the result line"));
+  }
+}
