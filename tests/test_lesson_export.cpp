@@ -3,6 +3,7 @@
 // tests/lesson_export_browser.py.
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
 #include <stb_image.h>
 #include <algorithm>
 #include <filesystem>
@@ -59,6 +60,12 @@ TEST_CASE("visualizer lesson export: a step range writes index.html and one fram
   CHECK(names_in(dir) == std::set<std::string>{"page"});  // no temporary left beside it
   CHECK(names_in(page) == std::set<std::string>{"index.html", "frames"});
   CHECK(names_in(page / "frames") == std::set<std::string>{"0002.png", "0003.png", "0004.png", "0005.png"});
+  // The page is made to be served: its directories take the umask's mode, as mkdir gives (not mkdtemp's 0700).
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  const auto want = static_cast<fs::perms>(0777 & ~mask);
+  CHECK((fs::status(page).permissions() & fs::perms::all) == want);
+  CHECK((fs::status(page / "frames").permissions() & fs::perms::all) == want);
   for (const auto& e : fs::directory_iterator(page / "frames")) {
     int w = 0, h = 0, n = 0;
     REQUIRE(stbi_info(e.path().c_str(), &w, &h, &n));

@@ -127,6 +127,10 @@ TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments 
       {"gif range reversed", good_head + "---\n", " --from 5 --to 2", "is after --to"},
       {"over the work budget", "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[4000000,1]}\n---\n", "", "more than the budget of 4000000"},
       {"compared run over the budget", long_head + "---\n", " --numeric double --compare exact", "x 11 for exact numbers"},
+      // 10 frames of 400 x 260 are 1,040,000 pixels.
+      {"gif over its pixel budget", good_head + "---\n", " --from 0 --to 9 --max-pixels 1000000", "more than --max-pixels 1000000"},
+      {"negative step budget", good_head + "---\n", " --from 0 --to 2 --max-steps -1", "expected a whole number"},
+      {"overflowing step budget", good_head + "---\n", " --max-steps 18446744073709551616", "expected a whole number"},
   };
   for (const Case& c : cases) {
     INFO(c.name);

@@ -1,5 +1,6 @@
 #include "headless/html_export.hpp"
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -62,6 +63,10 @@ class TempDir {
     if (!::mkdtemp(pattern.data()))
       throw InputError("--html " + arg + ": cannot write in " + t.parent.string() + " (" + std::strerror(errno) + ")");
     path_ = pattern;
+    // mkdtemp makes it 0700; the page is made to be served, so it takes the mode mkdir would give it.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::chmod(path_.c_str(), 0777 & ~mask);
   }
   ~TempDir() {
     std::error_code ec;

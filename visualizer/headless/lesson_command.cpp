@@ -1,4 +1,5 @@
 #include "headless/lesson_command.hpp"
+#include "budget.hpp"
 
 namespace sw::vis {
 
@@ -15,7 +16,7 @@ void add_lesson_commands(CLI::App& app, LessonCommands& c) {
   c.export_cmd->add_option("--size", e.size, "Frame size WxH (default 1280x800)");
   c.export_cmd->add_option("--from", e.from, "First step of the page (default 0)");
   c.export_cmd->add_option("--to", e.to, "Last step of the page, inclusive (default: the last step)");
-  c.export_cmd->add_option("--max-steps", e.max_steps, "Refuse inputs that imply more steps (default 4000000)");
+  c.export_cmd->add_option("--max-steps", e.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
   c.lint_cmd = add_lint_command(*c.group, c.lint_opts);
 }
 

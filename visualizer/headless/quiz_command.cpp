@@ -1,4 +1,5 @@
 #include "headless/quiz_command.hpp"
+#include "budget.hpp"
 #include <iostream>
 #include "lessons/quiz.hpp"
 
@@ -11,7 +12,7 @@ CLI::App* add_quiz_command(CLI::App& app, QuizOptions& o) {
   auto* list = q->add_flag("--list", o.list, "Print the questions instead: step, type, prompt, choices");
   answers->excludes(list);
   q->add_flag("--json", o.json, "One JSON object per line");
-  q->add_option("--max-steps", o.max_steps, "Refuse lessons whose run implies more steps (default 4000000)");
+  q->add_option("--max-steps", o.max_steps, "Refuse lessons whose run implies more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
   return q;
 }
 
@@ -78,7 +79,7 @@ int run_quiz(const QuizOptions& o) {
 CLI::App* add_lint_command(CLI::App& group, LintOptions& o) {
   auto* l = group.add_subcommand("lint", "Check lessons: every section reachable, every template and condition resolving");
   l->add_option("files", o.files, "Lesson files")->required();
-  l->add_option("--max-steps", o.max_steps, "Refuse lessons whose runs imply more steps (default 4000000)");
+  l->add_option("--max-steps", o.max_steps, "Refuse lessons whose runs imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
   return l;
 }
 

@@ -1,4 +1,5 @@
 #include "headless/render_command.hpp"
+#include "budget.hpp"
 #include <algorithm>
 #include <charconv>
 #include <fstream>
@@ -39,7 +40,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (default 1)");
   r->add_flag("--present", o.present, "Presentation mode: big fonts, no edit rows or state panel");
   r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
-  r->add_option("--max-steps", o.max_steps, "Refuse inputs that imply more steps (default 4000000)");
+  r->add_option("--max-steps", o.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
+  r->add_option("--max-pixels", o.max_pixels, "Refuse a GIF of more frames x width x height (default 2147483648)")->check(CLI::Validator(budget_count_error, "COUNT"));
   r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree, lobe; default the lesson's, else the first)");
   return r;
 }
@@ -107,6 +109,10 @@ int run_render(const RenderOptions& o) {
   if (from > to) throw InputError("--from " + std::to_string(from) + " is after --to " + std::to_string(to));
   constexpr std::size_t kMaxFrames = 2000;
   if (to - from + 1 > kMaxFrames) throw InputError("the GIF would have " + std::to_string(to - from + 1) + " frames; at most " + std::to_string(kMaxFrames));
+  // The GIF's work: every frame is rendered and quantised whole (frames <= 2000, pixels <= 2^24: no overflow).
+  const std::uint64_t pixels = std::uint64_t(to - from + 1) * std::uint64_t(w) * std::uint64_t(h);
+  if (pixels > o.max_pixels)
+    throw InputError("the GIF would render " + std::to_string(pixels) + " pixels (frames x width x height), more than --max-pixels " + std::to_string(o.max_pixels));
   GifWriter gif(o.gif, w, h, o.delay_ms);
   for (std::size_t s = from; s <= to; ++s) {
     session.set_step(s);

@@ -18,6 +18,7 @@ struct RenderOptions {
   bool focus = false, present = false;
   double scale = 1;  // the UI scale, theme::kMinScale to theme::kMaxScale
   std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
+  std::uint64_t max_pixels = std::uint64_t{1} << 31;  // a GIF's frames x width x height
 };
 
 // "WxH" with 320 <= W, 240 <= H, both <= 4096; throws InputError naming --size otherwise.
