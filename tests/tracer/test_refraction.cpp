@@ -100,3 +100,17 @@ TEST_CASE("a glass ball focuses caustic photons on the floor below it", "[tracer
   CHECK(tracer::caustic_irradiance(map, {0, 0, 0}).x > 3);
   CHECK(tracer::caustic_irradiance(map, {3, 0, 0}).x == 0);
 }
+
+TEST_CASE("refraction: exactly at the critical angle is total internal reflection", "[tracer][refraction]") {
+  // Leaving glass of index 5/4 into air: sin(critical) = 4/5. The ray (4, -3, 0) meets the normal
+  // (0, 1, 0) at sin = 4/5 exactly (every input a double, exactly), so n1^2 sin^2 = n2^2: the exact
+  // sign of the TIR polynomial is 0, and the ray is reflected.
+  NoProbe none;
+  const auto at = tracer::refract(Vec3<double>{4, -3, 0}, Vec3<double>{0, 1, 0}, 1.25, 1.0, lighting::Fresnel::exact, none);
+  CHECK(at.tir);
+  // A hair inside the cone (sin just below 4/5) is transmitted, bent by eta = n1/n2 = 5/4 away from the normal.
+  const auto inside = tracer::refract(Vec3<double>{3.99, -3, 0}, Vec3<double>{0, 1, 0}, 1.25, 1.0, lighting::Fresnel::exact, none);
+  REQUIRE_FALSE(inside.tir);
+  const double sin_i = 3.99 / std::sqrt(3.99 * 3.99 + 9), sin_t = inside.dir.x / std::sqrt(dot(inside.dir, inside.dir));
+  CHECK(sin_t == Approx(1.25 * sin_i).epsilon(1e-12));  // Snell: n1 sin(i) = n2 sin(t)
+}
