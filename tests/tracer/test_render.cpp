@@ -6,6 +6,8 @@
 //  - determinism: the same bytes on 1 and 2 threads;
 //  - the CLI: a summary, and bad input refused with one line, exit 2 and no image.
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include "cli_harness.hpp"
 #include "scene_gen.hpp"
@@ -160,4 +162,33 @@ TEST_CASE("scene render and plan on the command line", "[tracer][cli]") {
   const auto missing = testing::run_stepwise("scene render " + (dir / "none.json").string() + " --out " + bad_out.string());
   CHECK(missing.status == 2);
   CHECK_FALSE(fs::exists(bad_out));
+}
+
+TEST_CASE("render: adaptive sampling refines exactly the pixels its definition names", "[tracer][render][adaptive]") {
+  // The definition: a pixel is refined when its centre sample differs from a 4-neighbour's by more
+  // than the threshold (1/16 by default) in some channel, both clamped to [0, 1]. The centre samples
+  // are a 1-sample render's; the sphere's outline gives horizontal and vertical edges alike.
+  const tracer::Scene s = scene_of(lone("sphere", 1, {{"type", "directional"}, {"direction", {1, 1, 1}}}));
+  const tracer::RenderResult centre = render(s, false, 64, 48);
+  tracer::RenderOptions o;
+  o.width = 64, o.height = 48, o.adaptive = true;
+  const tracer::RenderResult adaptive = tracer::render(s, o);
+  auto differs = [&](std::size_t a, std::size_t b) {
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(std::clamp(centre.rgb[a][k], 0.0, 1.0) - std::clamp(centre.rgb[b][k], 0.0, 1.0)) > 1.0 / 16) return true;
+    return false;
+  };
+  std::uint64_t want = 0;
+  std::size_t changed = 0;
+  for (std::size_t j = 0; j < 48; ++j)
+    for (std::size_t i = 0; i < 64; ++i) {
+      const std::size_t p = j * 64 + i;
+      const bool refine = (i > 0 && differs(p, p - 1)) || (i < 63 && differs(p, p + 1)) || (j > 0 && differs(p, p - 64)) || (j < 47 && differs(p, p + 64));
+      want += refine;
+      // A pixel not refined keeps its centre sample exactly.
+      if (!refine) changed += !(adaptive.rgb[p] == centre.rgb[p]);
+    }
+  REQUIRE(want > 20);  // the outline is there to refine
+  CHECK(adaptive.refined_pixels == want);
+  CHECK(changed == 0);
 }
