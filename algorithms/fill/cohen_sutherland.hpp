@@ -94,28 +94,18 @@ ClippedSegment<Num> cohen_sutherland(Vec2<Num> p0, Vec2<Num> p1, const Vec2<Num>
     const int k = c[0] != 0 ? 0 : 1;
     const int bit = c[k] & -c[k];  // the lowest set bit
     const Vec2<Num> d = p[1] - p[0];
+    auto record_cut = [&](auto line) {
+      if constexpr (Probe::on)
+        probe.step(line, StepKind::advance).idx("k", k).idx("b", bit).num("x", p[k].x).num("y", p[k].y).point(p[k]).label("cut");
+    };
     if (bit == kLeft || bit == kRight) {
       const Num x = bit == kLeft ? lo.x : hi.x;
       p[k] = {x, p[0].y + d.y * (x - p[0].x) / d.x};
-      if constexpr (Probe::on)
-        probe.step(L::cut_x, StepKind::advance)
-            .idx("k", k)
-            .idx("b", bit)
-            .num("x", p[k].x)
-            .num("y", p[k].y)
-            .point(p[k])
-            .label("cut");
+      record_cut(L::cut_x);
     } else {
       const Num y = bit == kBelow ? lo.y : hi.y;
       p[k] = {p[0].x + d.x * (y - p[0].y) / d.y, y};
-      if constexpr (Probe::on)
-        probe.step(L::cut_y, StepKind::advance)
-            .idx("k", k)
-            .idx("b", bit)
-            .num("x", p[k].x)
-            .num("y", p[k].y)
-            .point(p[k])
-            .label("cut");
+      record_cut(L::cut_y);
     }
     c[k] = outcode(p[k], lo, hi);
     if constexpr (Probe::on) {

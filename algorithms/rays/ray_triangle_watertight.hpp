@@ -67,20 +67,24 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     probe.step(L::project, StepKind::init).num("Ax", ax).num("Ay", ay).num("Bx", bx).num("By", by).num("Cx", cx).num("Cy", cy);
   Num u = cx * by - cy * bx, w_v = ax * cy - ay * cx, w = bx * ay - by * ax;
   // U, V, W are the edge functions of the edges opposite v0, v1, v2: their signs colour those edges.
-  if constexpr (Probe::on)
-    probe.step(L::edges, StepKind::decide)
-        .num("U", u)
-        .num("V", w_v)
-        .num("W", w)
-        .segment(v[1], v[2])
-        .label("U")
-        .value(u)
-        .segment(v[2], v[0])
-        .label("V")
-        .value(w_v)
-        .segment(v[0], v[1])
-        .label("W")
-        .value(w);
+  // The three edge functions, each beside the edge whose sign it gives.
+  auto record_edges = [&](auto line) {
+    if constexpr (Probe::on)
+      probe.step(line, StepKind::decide)
+          .num("U", u)
+          .num("V", w_v)
+          .num("W", w)
+          .segment(v[1], v[2])
+          .label("U")
+          .value(u)
+          .segment(v[2], v[0])
+          .label("V")
+          .value(w_v)
+          .segment(v[0], v[1])
+          .label("W")
+          .value(w);
+  };
+  record_edges(L::edges);
   if constexpr (std::is_same_v<Num, float>) {
     if (u == 0.0f || w_v == 0.0f || w == 0.0f) {
       // Float edge functions of exactly zero are retried with double products of the same
@@ -89,20 +93,7 @@ template <NumberType Num, StepProbe Probe = NoProbe>
       const double axy = double(ax) * double(cy), ayx = double(ay) * double(cx);
       const double bxy = double(bx) * double(ay), byx = double(by) * double(ax);
       u = float(cxy - cyx), w_v = float(axy - ayx), w = float(bxy - byx);
-      if constexpr (Probe::on)
-        probe.step(L::retry, StepKind::decide)
-            .num("U", u)
-            .num("V", w_v)
-            .num("W", w)
-            .segment(v[1], v[2])
-            .label("U")
-            .value(u)
-            .segment(v[2], v[0])
-            .label("V")
-            .value(w_v)
-            .segment(v[0], v[1])
-            .label("W")
-            .value(w);
+      record_edges(L::retry);
     }
   }
   const int su = num::sign(u), sv = num::sign(w_v), sw = num::sign(w);
