@@ -348,7 +348,8 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     };
 
     // Replay: the reference run streams its steps; each is compared with the trace's next line as
-    // it is made, so memory stays flat however long the trace.
+    // it is made, so memory does not grow with the number of steps; only the result line, read
+    // whole, costs memory in its size (about 350 bytes a pixel of a pixel list, as JSON).
     std::size_t i = 0;
     std::optional<Json> pending;  // a trace line read but not yet matched
     std::optional<std::string> replay_result;  // the replay's result line
