@@ -56,6 +56,20 @@ TEST_CASE("shade: hand-computed GL cases, exact", "[lighting][shade]") {
     CHECK_FALSE(s.lights[0].inside);
     CHECK(s.rgb.x == 0);
   }
+  SECTION("a spot turned away: P behind it (D.S < 0) is outside any cone up to 90 degrees") {
+    // D = P - light = (0, 0, -2), S = (0, 0, 1): D.S = -2 < 0. Turned towards P it lights it fully.
+    const std::string away = R"({"p":[0,0,0],"n":[0,0,1],"eye":[0,0,5],"ambient":[0,0,0],
+      "lights":[{"type":"spot","position":[0,0,2],"spot_direction":[0,0,1],"cutoff":80,"exponent":0}],
+      "material":{"ambient":[0,0,0],"diffuse":[1,1,1]}})";
+    const auto s = exact_shade(away);
+    CHECK_FALSE(s.lights[0].inside);
+    CHECK(s.rgb.x == 0);
+    std::string towards = away;
+    towards.replace(towards.find("[0,0,1],\"cutoff\""), 7, "[0,0,-1]");
+    const auto t = exact_shade(towards);
+    CHECK(t.lights[0].inside);
+    CHECK(t.rgb.x == 1);  // n = l = (0, 0, 1), spot^0 = 1, no attenuation
+  }
   SECTION("grazing light (n.l = 0) and a light behind: no diffuse, no specular; ambient of the light stays") {
     const auto s = exact_shade(R"({"p":[0,0,0],"n":[0,0,1],"eye":[0,0,1],"ambient":[0,0,0],
       "lights":[{"position":[4,0,0],"ambient":["0.5","0.5","0.5"]},{"position":[0,0,-1]}],
