@@ -7,6 +7,7 @@
 #include <random>
 #include <string_view>
 #include <vector>
+#include "bench_harness.hpp"
 #include "catalog.hpp"
 #include "input.hpp"
 #include "lighting/brdf.hpp"
@@ -49,5 +50,8 @@ const ModelRow& diffuse_row(const Json& name, const std::string& what);
 std::vector<Param> model_sliders();
 // Random parameters for a row's entry: the bench sets' generator.
 Json random_params(const ModelRow& row, std::mt19937_64& rng, bool hard);
+struct ModelInput;
+// The bench sets of the entry `id`: "random" frames and "hard" ones (grazing, l = e, huge exponents, tiny and huge lengths).
+std::vector<BenchSet<ModelInput>> model_bench_sets(std::string_view id);
 
 }  // namespace sw::lighting_io
