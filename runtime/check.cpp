@@ -86,15 +86,14 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
   const std::string want_in = want.value("in", ""), got_in = got.contains("in") && got["in"].is_string() ? got["in"].get<std::string>() : "";
   if (want_in != got_in)
     return "listing: expected a step of " + (want_in.empty() ? std::string("the algorithm itself") : want_in) + ", got one of " + (got_in.empty() ? std::string("the algorithm itself") : got_in);
-  // A callee's listing, for naming lines: a catalog algorithm's, or none for an inner scope of
-  // one (the tracer's scene-hit), whose lines are then shown by number.
-  const Listing* lst = &listing;
-  if (!want_in.empty()) {
-    const auto& all = catalog();
-    const auto it = std::find_if(all.begin(), all.end(), [&](const Algorithm& a) { return a.id == want_in; });
-    lst = it == all.end() ? nullptr : &it->listing;
-  }
+  // Lines are named only in a message: the callee's listing is looked up then, not per step.
   auto line_name = [&](const Json& l) {
+    const Listing* lst = &listing;
+    if (!want_in.empty()) {
+      const auto& all = catalog();
+      const auto it = std::find_if(all.begin(), all.end(), [&](const Algorithm& a) { return a.id == want_in; });
+      lst = it == all.end() ? nullptr : &it->listing;  // an inner scope (scene-hit): lines by number
+    }
     const auto id = l.get<std::int64_t>();
     return l.dump() + (lst && id >= 1 && id <= static_cast<std::int64_t>(lst->lines.size()) ? " (" + std::string(lst->lines[id - 1].name) + ")" : "");
   };

@@ -207,7 +207,8 @@ template <class A> struct ModelSpec {
   static Input parse(const Json& j) { return lighting_io::parse_model_input(Algo::id, j); }
   static std::vector<Handle> handles() { return {{"/l", Handle::Kind::direction3, 0, "l"}, {"/e", Handle::Kind::direction3, 0, "e"}}; }
   template <class Num> static Prepared<Num> prepare(const Input& in) {
-    return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, lighting_io::model_row(Algo::id).bounded};
+    static const bool bounded = lighting_io::model_row(Algo::id).bounded;  // looked up once, not per sweep sample
+    return {in.choice, to_num<Num>(in.n), to_num<Num>(in.l), to_num<Num>(in.e), params_as<Num>(in.p), in.signs, bounded};
   }
   // The image view: the model over a sphere's normals, l and e as given, decisions exact per sample.
   static constexpr std::string_view sweep_caption = "normals of a unit sphere seen from +z, l and e as given";
