@@ -150,7 +150,7 @@ else
 fi
 tar -C "$ROOT" --null -T "$WORK/files" -cf - | tar -C "$WORK/stage" -xf -
 (cd "$WORK/stage" && find . -type f -printf '%P\n' | sort) >"$WORK/stage.list"
-(cd "$SRC" && find . -type f -printf '%P\n' | sort) >"$WORK/src.list"
+(cd "$SRC" && find . -type f ! -path './out/*' -printf '%P\n' | sort) >"$WORK/src.list"
 comm -13 "$WORK/stage.list" "$WORK/src.list" | while IFS= read -r f; do rm -f "$SRC/$f"; done
 while IFS= read -r f; do
   if ! cmp -s "$WORK/stage/$f" "$SRC/$f"; then
@@ -159,6 +159,8 @@ while IFS= read -r f; do
   fi
 done <"$WORK/stage.list"
 rm -rf "$WORK/stage"
+# The git-ignored meshes the scenes name (scripts/setup.sh extracts them into out/meshes).
+bash "$SRC/scripts/meshes.sh" "$SRC/out/meshes" >/dev/null
 
 LAUNCHER=()
 command -v ccache >/dev/null && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

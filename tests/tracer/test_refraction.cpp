@@ -114,3 +114,27 @@ TEST_CASE("refraction: exactly at the critical angle is total internal reflectio
   const double sin_i = 3.99 / std::sqrt(3.99 * 3.99 + 9), sin_t = inside.dir.x / std::sqrt(dot(inside.dir, inside.dir));
   CHECK(sin_t == Approx(1.25 * sin_i).epsilon(1e-12));  // Snell: n1 sin(i) = n2 sin(t)
 }
+
+TEST_CASE("caustic irradiance: the photons within a closed radius over the disc's area", "[tracer][caustics]") {
+  // Jensen's estimate E = sum(power) / (pi r^2): photons of power 1 at distances 1/2 and exactly
+  // the radius 1 from the point, and one at 2 (outside). With room for all (gather 64) r is the
+  // radius: E = 2 / pi. With gather 1, r is the nearest photon's distance: E = 1 / (pi / 4).
+  tracer::PhotonMap map;
+  map.at = {{0.5, 0, 0}, {0, 1, 0}, {0, 0, 2}};
+  map.power.assign(3, Vec3<double>{1, 1, 1});
+  std::vector<spatial::Box<double, 3>> boxes;
+  for (const auto& p : map.at) boxes.push_back(spatial::Box<double, 3>::at(p));
+  NoProbe none;
+  map.tree = spatial::kd_build<double, 3>(boxes, true, none);
+  map.bounds = boxes[0];
+  for (const auto& p : map.at) map.bounds.grow(p);
+  map.radius = 1;
+  map.gather = 64;
+  const double pi = std::acos(-1.0);
+  CHECK(tracer::caustic_irradiance(map, {0, 0, 0}).x == Approx(2 / pi).epsilon(1e-15));
+  map.gather = 1;
+  CHECK(tracer::caustic_irradiance(map, {0, 0, 0}).y == Approx(4 / pi).epsilon(1e-15));
+  // Farther than the radius from every photon: nothing.
+  map.gather = 64;
+  CHECK(tracer::caustic_irradiance(map, {0, -5, 0}).z == 0);
+}

@@ -192,3 +192,24 @@ TEST_CASE("render: adaptive sampling refines exactly the pixels its definition n
   CHECK(adaptive.refined_pixels == want);
   CHECK(changed == 0);
 }
+
+TEST_CASE("render: adaptive sampling refines only differences strictly above the threshold", "[tracer][render][adaptive]") {
+  // An emitting sphere of exactly 1/4 on a black background: every outline difference is exactly
+  // 1/4. At threshold 1/4 nothing is refined; just below it, the outline is.
+  auto scene = [](double threshold) {
+    return scene_of({{"camera", {{"eye", {0, 0, 8}}, {"vpn", {0, 0, 1}}, {"vup", {0, 1, 0}}, {"d", 1}, {"fov", 40}, {"resolution", {32, 24}}}},
+                     {"materials", {{"m", {{"emission", {0.25, 0.25, 0.25}}, {"ambient", {0, 0, 0}}, {"diffuse", {0, 0, 0}}}}}},
+                     {"ambient", {0, 0, 0}},
+                     {"lights", Json::array()},
+                     {"objects", {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1.5}, {"material", "m"}}}},
+                     {"sampling", {{"type", "adaptive"}, {"threshold", threshold}, {"max_n", 4}}}});
+  };
+  tracer::RenderOptions o;
+  o.adaptive = true;
+  const tracer::RenderResult at = tracer::render(scene(0.25), o);
+  std::size_t lit = 0;
+  for (const auto& c : at.rgb) lit += c.x == 0.25;
+  REQUIRE(lit > 20);  // the sphere is there, at exactly 1/4
+  CHECK(at.refined_pixels == 0);
+  CHECK(tracer::render(scene(0.2499), o).refined_pixels > 20);
+}
