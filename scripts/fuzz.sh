@@ -13,7 +13,7 @@ case "${1:-}" in
   -runs) limit=(-runs="$2"); shift 2 ;;
 esac
 names=("$@")
-((${#names[@]})) || names=(run check lesson scene)
+((${#names[@]})) || names=(run check lesson scene files)
 mkdir -p "$BUILD/fuzz-artifacts"
 status=0
 pids=()
