@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 #include "catalog.hpp"
+#include "data_root.hpp"
 #include "scene_command.hpp"  // `stepwise scene check`
 #include "output.hpp"
 #include "trace_io.hpp"
@@ -64,6 +65,7 @@ void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool j
 
 static int run_command(int argc, char** argv) {
   CLI::App app{"stepwise: step through classic graphics algorithms, exactly"};
+  app.set_version_flag("--version", "stepwise " SW_VERSION "\ndata: " + data_root().string());
   app.require_subcommand(1);
 
   auto* list = app.add_subcommand("list", "One line per algorithm: its id and what it does");
@@ -125,6 +127,8 @@ static int run_command(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "stepwise: error: " << one_line(e.what()) << '\n';

@@ -3,7 +3,7 @@
 # opens the window (stepwise-gui); without one it renders frames of the first lesson into out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh build
+scripts/setup.sh --app build
 mkdir -p out
 build/stepwise trace dda-line --input '{"p0":[1.25,2.5],"p1":[12.75,7.25]}' --numeric exact --out out/dda-line.jsonl
 build/stepwise check out/dda-line.jsonl

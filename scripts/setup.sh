@@ -1,19 +1,28 @@
 #!/usr/bin/env bash
 # Installs the Debian packages stepwise needs (only those missing), then configures and builds.
 # Idempotent: a second run installs nothing and rebuilds only what changed.
-# Usage: scripts/setup.sh [build-dir] [extra cmake args...]
+# Usage: scripts/setup.sh [--app] [build-dir] [extra cmake args...]
+#   --app  only what the app and the CLI need: their packages, and the targets stepwise and
+#          stepwise-gui (scripts/run.sh, the fast first picture). Without it: every package (tests,
+#          peers, benches, the sanitizer job's clang) and every target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+APP=0
+if [ "${1:-}" = --app ]; then APP=1; shift; fi
 
+# The app and the CLI: compilers, GMP/MPFR, CGAL (the exact oracle inside the runtime), JSON and
+# CLI parsing, ImGui with GLFW and OSMesa, GIF and Markdown, the fonts, and CGAL's meshes.
 PACKAGES=(
-  build-essential cmake pkg-config git
-  libgmp-dev libmpfr-dev libcgal-dev libglm-dev
-  catch2 nlohmann-json3-dev libcli11-dev libbenchmark-dev
-  libimgui-dev libstb-dev libglfw3-dev libgl-dev libosmesa6-dev libgif-dev
-  xvfb xauth libembree-dev fonts-dejavu-core libtinyobjloader-dev libnanoflann-dev
-  libcgal-demo clang libclang-rt-14-dev llvm-14
-  libmd4c-dev libmd4c-html0-dev chromium chromium-driver python3 python3-jsonschema
-  povray
+  build-essential cmake pkg-config
+  libgmp-dev libmpfr-dev libcgal-dev libglm-dev nlohmann-json3-dev libcli11-dev
+  libimgui-dev libstb-dev libglfw3-dev libgl-dev libosmesa6-dev libgif-dev libmd4c-dev libmd4c-html0-dev
+  fonts-dejavu-core libcgal-demo
+)
+# The tests, their peers (POV-Ray, xvfb, Chromium, Embree, nanoflann) and the benches; clang and
+# LLVM for the sanitizer and fuzz build.
+((APP)) || PACKAGES+=(
+  git catch2 libbenchmark-dev xvfb xauth libembree-dev libtinyobjloader-dev libnanoflann-dev
+  clang libclang-rt-14-dev llvm-14 chromium chromium-driver python3 python3-jsonschema povray
 )
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -31,5 +40,10 @@ bash scripts/meshes.sh out/meshes >/dev/null
 
 BUILD=${1:-build}
 shift || true
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$BUILD" -j"$(nproc)"
+if ((APP)); then
+  cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSW_TESTS=OFF -DSW_BENCH=OFF "$@" >/dev/null
+  cmake --build "$BUILD" -j"$(nproc)" --target stepwise stepwise-gui
+else
+  cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSW_TESTS=ON -DSW_BENCH=ON "$@" >/dev/null
+  cmake --build "$BUILD" -j"$(nproc)"
+fi

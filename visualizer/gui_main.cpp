@@ -17,6 +17,7 @@
 #include <sstream>
 #include "panels/app.hpp"
 #include "budget.hpp"
+#include "data_root.hpp"
 #include "headless/gl_texture.hpp"
 #include "headless/image_io.hpp"
 
@@ -68,6 +69,7 @@ bool open(Session& session, const Options& o) {
 int main(int argc, char** argv) {
   const auto t_start = Clock::now();
   CLI::App cli{"stepwise-gui: step through classic graphics algorithms"};
+  cli.set_version_flag("--version", "stepwise-gui " SW_VERSION "\ndata: " + data_root().string());
   Options o;
   auto* lesson = cli.add_option("--lesson", o.lesson, "Lesson file (default: the first lesson)");
   auto* alg = cli.add_option("--algorithm", o.algorithm, "Algorithm id");
@@ -86,6 +88,8 @@ int main(int argc, char** argv) {
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "stepwise-gui: error: " << e.what() << '\n';

@@ -1,4 +1,5 @@
 #include "tracer/history.hpp"
+#include "data_root.hpp"
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -7,29 +8,20 @@
 
 namespace sw::tracer {
 
-std::string source_root() {
-  if (const char* env = std::getenv("STEPWISE_SOURCE"); env && *env) return env;
-#ifdef SW_SOURCE_ROOT
-  return SW_SOURCE_ROOT;
-#else
-  return ".";
-#endif
-}
-
 namespace {
 
 std::shared_ptr<const Scene> load_scene(const Json& v, std::string* name) {
   if (v.is_string()) {
     std::filesystem::path p = v.get<std::string>();
     *name = p.string();
-    if (p.is_relative()) p = std::filesystem::path(source_root()) / p;
+    if (p.is_relative()) p = data_root() / p;
     require_regular_file(p.string(), "input.scene");
     return std::make_shared<const Scene>(read_scene_file(p.lexically_normal().string()));
   }
   if (!v.is_object()) throw InputError("input.scene: expected a scene file (relative to the source tree) or a scene object");
   *name = "inline";
   SceneOptions opt;
-  opt.base_dir = source_root();
+  opt.base_dir = data_root().string();
   try {
     return std::make_shared<const Scene>(parse_scene(v, opt));
   } catch (const InputError& e) {

@@ -23,13 +23,10 @@ struct HistoryInput {
   bool all_effects = false;
 };
 
-// {"scene": "scenes/x.json" (relative to the source tree) or a scene object, "pixel": [i, j],
+// {"scene": "scenes/x.json" (relative to the data root: data_root.hpp) or a scene object, "pixel": [i, j],
 // "size": [w, h], "offset": "robust"|"none"|"epsilon", "all_effects": bool}. Throws InputError
 // naming the JSON path ("input.pixel[0]: ...", "input.scene.objects[1].radius: ...").
 HistoryInput parse_history_input(const Json& j);
-
-// The directory relative scene paths are read from: $STEPWISE_SOURCE, else the source tree.
-std::string source_root();
 
 // The scene converted for tracing at the input's size, with its offset mode and plan.
 struct HistoryScene {

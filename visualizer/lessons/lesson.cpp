@@ -1,6 +1,7 @@
 // Lesson files: the front matter and the section headings (docs/lessons.md). Choosing and filling
 // a section is lesson_text.cpp; the lint is lesson_lint.cpp.
 #include "lessons/lesson.hpp"
+#include "data_root.hpp"
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
@@ -283,11 +284,7 @@ std::vector<std::filesystem::path> lesson_manifest(const std::filesystem::path& 
 
 std::filesystem::path default_lessons_dir() {
   if (const char* env = std::getenv("STEPWISE_LESSONS"); env && *env) return env;
-#ifdef SW_LESSONS_DIR
-  return SW_LESSONS_DIR;
-#else
-  return "lessons";
-#endif
+  return data_root() / "lessons";
 }
 
 }  // namespace sw::vis

@@ -91,7 +91,7 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
 // Throws InputError if the manifest is missing or names a missing file.
 std::vector<std::filesystem::path> lesson_manifest(const std::filesystem::path& lessons_dir);
 
-// The lessons directory: $STEPWISE_LESSONS, else the source tree's lessons/ (compiled in).
+// The lessons directory: $STEPWISE_LESSONS, else the data root's lessons/ (data_root.hpp).
 std::filesystem::path default_lessons_dir();
 
 }  // namespace sw::vis
