@@ -115,6 +115,13 @@ TEST_CASE("visualizer lesson export: bad input exits 2 with one line and writes 
                 "steps; a page holds at most 600 frames (choose a range with --from and --to)");
   check_refused(lesson("04-float-drift.md") + " --html " + out + " --size 320x240 --from 0 --to 600", dir,
                 "steps 0..600 are 601 frames; a page holds at most 600 frames");
+  // The pixel budget: 100 frames of 1280x800 (1.02e8 pixels) is over the default 2^26; a smaller
+  // --max-pixels refuses what the default takes; -1 cannot turn it off.
+  check_refused(lesson("04-float-drift.md") + " --html " + out + " --from 0 --to 99", dir,
+                "the page would render 102400000 pixels (100 frames of 1280x800), more than --max-pixels 67108864");
+  check_refused(lesson("02-grid-walk.md") + " --html " + out + " --size 320x240 --from 0 --to 3 --max-pixels 300000", dir,
+                "more than --max-pixels 300000");
+  check_refused(lesson("02-grid-walk.md") + " --html " + out + " --max-pixels -1", dir, "--max-pixels");
 }
 
 TEST_CASE("visualizer lesson export: lesson text cannot inject markup or script", "[visualizer]") {

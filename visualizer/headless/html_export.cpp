@@ -179,6 +179,7 @@ int run_lesson_export(const ExportOptions& o) {
                        " frames; " + limit);
     throw InputError(o.lesson + " has " + std::to_string(frames) + " steps; " + limit + " (choose a range with --from and --to)");
   }
+  check_frame_pixels(to - from + 1, w, h, o.max_pixels, "the page");
 
   const Json data = page_data(lesson, *session.model(0), from, to, w, h);
   const std::string page = lesson_page(lesson.title, lesson.intro.empty() ? std::string() : markdown_html(lesson.intro), data);

@@ -9,10 +9,15 @@
 
 namespace sw::vis {
 
+// The work budget of a page in frames x width x height, measured as the GIF's (render_command.hpp):
+// a frame's pixel costs about 120 ns here, rendered and then compressed to PNG.
+inline constexpr std::uint64_t kDefaultPagePixels = std::uint64_t{1} << 26;
+
 struct ExportOptions {
   std::string lesson, html_dir, size = "1280x800";
   std::optional<std::size_t> from, to;
   std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
+  std::uint64_t max_pixels = kDefaultPagePixels;
 };
 
 // A page holds at most this many frames; a longer lesson needs --from/--to.

@@ -20,6 +20,14 @@ std::pair<int, int> parse_frame_size(const std::string& s, std::string_view opti
   return {w, h};
 }
 
+void check_frame_pixels(std::size_t frames, int w, int h, std::uint64_t max_pixels, std::string_view what) {
+  // Every frame is rendered whole (frames <= 2000, pixels <= 2^24: no overflow).
+  const std::uint64_t pixels = std::uint64_t(frames) * std::uint64_t(w) * std::uint64_t(h);
+  if (pixels > max_pixels)
+    throw InputError(std::string(what) + " would render " + std::to_string(pixels) + " pixels (" + std::to_string(frames) + " frames of " +
+                     std::to_string(w) + "x" + std::to_string(h) + "), more than --max-pixels " + std::to_string(max_pixels));
+}
+
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   auto* r = app.add_subcommand("render", "Render visualizer frames headless (OSMesa): a PNG, or a GIF of a step range");
   auto* lesson = r->add_option("--lesson", o.lesson, "Lesson file (lessons/*.md)");
@@ -41,7 +49,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   r->add_flag("--present", o.present, "Presentation mode: big fonts, no edit rows or state panel");
   r->add_flag("--focus", o.focus, "Zoom the view onto the step (the image view: onto the input itself)");
   r->add_option("--max-steps", o.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
-  r->add_option("--max-pixels", o.max_pixels, "Refuse a GIF of more frames x width x height (default 2147483648)")->check(CLI::Validator(budget_count_error, "COUNT"));
+  r->add_option("--max-pixels", o.max_pixels, "Refuse a GIF of more frames x width x height (default " + std::to_string(kDefaultGifPixels) + ")")->check(CLI::Validator(budget_count_error, "COUNT"));
   r->add_option("--view", o.view, "The view to show: one the algorithm declares (plane2d, orbit3d, table, image, plot, tree, lobe; default the lesson's, else the first)");
   return r;
 }
@@ -109,10 +117,7 @@ int run_render(const RenderOptions& o) {
   if (from > to) throw InputError("--from " + std::to_string(from) + " is after --to " + std::to_string(to));
   constexpr std::size_t kMaxFrames = 2000;
   if (to - from + 1 > kMaxFrames) throw InputError("the GIF would have " + std::to_string(to - from + 1) + " frames; at most " + std::to_string(kMaxFrames));
-  // The GIF's work: every frame is rendered and quantised whole (frames <= 2000, pixels <= 2^24: no overflow).
-  const std::uint64_t pixels = std::uint64_t(to - from + 1) * std::uint64_t(w) * std::uint64_t(h);
-  if (pixels > o.max_pixels)
-    throw InputError("the GIF would render " + std::to_string(pixels) + " pixels (frames x width x height), more than --max-pixels " + std::to_string(o.max_pixels));
+  check_frame_pixels(to - from + 1, w, h, o.max_pixels, "the GIF");
   GifWriter gif(o.gif, w, h, o.delay_ms);
   for (std::size_t s = from; s <= to; ++s) {
     session.set_step(s);

@@ -11,6 +11,12 @@
 
 namespace sw::vis {
 
+// The work budget of a GIF in frames x width x height, measured so that the largest the default
+// accepts takes about 10 s here (docs/visualizer.md): a GIF frame's pixel costs about 45 ns.
+inline constexpr std::uint64_t kDefaultGifPixels = std::uint64_t{1} << 27;
+// Throws InputError naming --max-pixels when frames x w x h exceeds max_pixels.
+void check_frame_pixels(std::size_t frames, int w, int h, std::uint64_t max_pixels, std::string_view what);
+
 struct RenderOptions {
   std::string lesson, algorithm, input, numeric, compare, out, gif, size = "1280x800", view;
   std::optional<std::size_t> step, from, to;
@@ -18,7 +24,7 @@ struct RenderOptions {
   bool focus = false, present = false;
   double scale = 1;  // the UI scale, theme::kMinScale to theme::kMaxScale
   std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
-  std::uint64_t max_pixels = std::uint64_t{1} << 31;  // a GIF's frames x width x height
+  std::uint64_t max_pixels = kDefaultGifPixels;  // a GIF's frames x width x height
 };
 
 // "WxH" with 320 <= W, 240 <= H, both <= 4096; throws InputError naming --size otherwise.
