@@ -3,6 +3,9 @@
 // a bad edit that changes nothing, number types, the compare stats, the quiz's gate and answers,
 // and the timeline. In sw_lessons, so the sanitizer build runs it too.
 #include <catch2/catch.hpp>
+#include <unistd.h>
+#include <fstream>
+#include "lessons/grading.hpp"
 #include "lessons/session.hpp"
 
 using namespace sw;
@@ -220,6 +223,40 @@ TEST_CASE("session: the quiz holds stepping at each question until it is answere
   // No lesson, no quiz.
   REQUIRE(s.open_algorithm(find_algorithm("dda-line"), Json::parse(R"({"p0":[0,0],"p1":[9,4]})"), Numeric::exact));
   CHECK_FALSE(s.set_quiz(true));
+}
+
+TEST_CASE("session: quiz answers are saved as given, and grade_class grades the file", "[session][quiz]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("sw-answers-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  Session s(kLessons);
+  REQUIRE(s.open_lesson(kLessons / "01-dda-line.md"));
+  s.save_answers_in(dir / "ann", "ann\nforged");
+  CHECK(s.answers_file() == dir / "ann" / "01-dda-line.jsonl");
+  REQUIRE(s.set_quiz(true));
+  s.set_step(s.steps() - 1);  // held at the first question: the next pixel after (2, 3) is (3, 3)
+  REQUIRE(s.answer(Json::array({3, 3})));
+  CHECK(std::filesystem::exists(s.answers_file()));  // saved at once, the directory made
+  s.set_step(s.steps() - 1);
+  REQUIRE(s.quiz_pending());
+  REQUIRE(s.answer(Json::array({-100, -100})));
+  CHECK(s.answers_error().empty());
+  // The saved file is what `stepwise quiz` grades: one student, the same score, in order.
+  const ClassGrades g = grade_class(s.quiz_session().questions(), {s.answers_file()});
+  CHECK(g.skipped.empty());
+  REQUIRE(g.students == std::vector<std::string>{"ann\nforged"});
+  REQUIRE(g.answers.size() == 2);
+  CHECK(g.answers[0].right);
+  CHECK_FALSE(g.answers[1].right);
+  CHECK(printable_name(g.students[0]) == "\"ann\\nforged\"");  // printed escaped, on one line
+  // A directory that cannot be made: the error is kept, the quiz goes on.
+  std::ofstream(dir / "file") << "x";
+  s.save_answers_in(dir / "file", "bob");
+  REQUIRE(s.set_quiz(false));
+  REQUIRE(s.set_quiz(true));
+  s.set_step(s.steps() - 1);
+  REQUIRE(s.answer(Json::array({3, 3})));
+  CHECK_THAT(s.answers_error(), Catch::StartsWith("cannot save the answers"));
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("session: the timeline steps, seeks, steps over nested calls and plays", "[session]") {

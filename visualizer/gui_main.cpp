@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 #include <CLI/CLI.hpp>
 #include <cfloat>
+#include <cstdlib>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -28,11 +29,11 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 struct Options {
-  std::string lesson, algorithm, input, numeric, compare, screenshot, size = "1280x800";
+  std::string lesson, algorithm, input, numeric, compare, screenshot, size = "1280x800", answers_dir, student;
   std::optional<std::size_t> step;
   int frames = 0, bench_scrub = 0;
   double scale = 1;
-  bool present = false;
+  bool present = false, quiz = false;
   Budget budget;
 };
 
@@ -60,6 +61,11 @@ bool open(Session& session, const Options& o) {
       return false;
     }
   }
+  if (!o.answers_dir.empty()) {
+    const char* user = std::getenv("USER");
+    session.save_answers_in(o.answers_dir, !o.student.empty() ? o.student : user && *user ? user : "student");
+  }
+  if (o.quiz && !session.set_quiz(true)) return false;
   if (o.step) session.set_step(*o.step);
   return true;
 }
@@ -82,6 +88,9 @@ int main(int argc, char** argv) {
   cli.add_option("--size", o.size, "Window size WxH");
   cli.add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (a projector: 1.5 to 2)");
   cli.add_flag("--present", o.present, "Start in presentation mode (P toggles it)");
+  cli.add_flag("--quiz", o.quiz, "Start the lesson in quiz mode (Q toggles it)")->excludes(alg);
+  cli.add_option("--answers-dir", o.answers_dir, "Save quiz answers as they are given, in DIR/<lesson>.jsonl (stepwise quiz grades them)");
+  cli.add_option("--student", o.student, "The name saved with the answers (default: $USER)");
   cli.add_option("--frames", o.frames, "Render this many frames, then exit")->check(CLI::Range(1, 100000));
   cli.add_option("--screenshot", o.screenshot, "With --frames: write the last frame to this PNG");
   cli.add_option("--bench-scrub", o.bench_scrub, "")->group("");  // hidden benchmark

@@ -1,6 +1,9 @@
 #include "headless/quiz_command.hpp"
 #include "budget.hpp"
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
+#include "lessons/grading.hpp"
 #include "lessons/quiz.hpp"
 
 namespace sw::vis {
@@ -8,16 +11,72 @@ namespace sw::vis {
 CLI::App* add_quiz_command(CLI::App& app, QuizOptions& o) {
   auto* q = app.add_subcommand("quiz", "Grade a lesson's predict-the-next-step answers against the exact trace");
   q->add_option("lesson", o.lesson, "Lesson file (lessons/*.md)")->required();
-  auto* answers = q->add_option("--answers", o.answers, "JSONL: one {\"step\": N, \"answer\": ...} per line");
+  auto* answers = q->add_option("--answers", o.answers, "Answer files or directories of them (JSONL: one {\"step\": N, \"answer\": ...} per line; a file is one student's unless lines name \"student\")");
   auto* list = q->add_flag("--list", o.list, "Print the questions instead: step, type, prompt, choices");
   answers->excludes(list);
-  q->add_flag("--json", o.json, "One JSON object per line");
+  auto* json = q->add_flag("--json", o.json, "One JSON object per line");
+  q->add_flag("--csv", o.csv, "Grades as CSV: a row per student, a column per question")->excludes(json)->excludes(list);
   q->add_option("--max-steps", o.max_steps, "Refuse lessons whose run implies more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
   return q;
 }
 
+namespace {
+
+// Per student (their answers, then the score), per question (how many got it right), and the
+// class: as text, JSON lines or CSV.
+void print_grades(const ClassGrades& g, const std::vector<Question>& questions, const QuizOptions& o) {
+  std::vector<int> right(g.students.size()), answered(g.students.size());
+  for (const GradedAnswer& a : g.answers) right[a.student] += a.right, ++answered[a.student];
+  auto question_tally = [&](const Question& q) {
+    int r = 0, n = 0;
+    for (const GradedAnswer& a : g.answers)
+      if (a.question == &q) r += a.right, ++n;
+    return std::pair{r, n};
+  };
+  const int total_right = static_cast<int>(std::count_if(g.answers.begin(), g.answers.end(), [](const GradedAnswer& a) { return a.right; }));
+  auto label = [](const Question& q) { return "step " + std::to_string(q.step) + " " + std::string(quiz_type_name(q.type)); };
+  if (o.csv) {
+    std::cout << "student,right,answered";
+    for (const Question& q : questions) std::cout << ',' << csv_field(label(q));
+    std::cout << '\n';
+    for (std::size_t s = 0; s < g.students.size(); ++s) {
+      std::cout << csv_field(g.students[s]) << ',' << right[s] << ',' << answered[s];
+      for (const Question& q : questions) {
+        const auto a = std::find_if(g.answers.begin(), g.answers.end(), [&](const GradedAnswer& x) { return x.student == s && x.question == &q; });
+        std::cout << ',' << (a == g.answers.end() ? "" : a->right ? "right" : "wrong");
+      }
+      std::cout << '\n';
+    }
+    return;
+  }
+  for (std::size_t s = 0; s < g.students.size(); ++s) {
+    Json list = Json::array();
+    if (!o.json) std::cout << printable_name(g.students[s]) << ": " << right[s] << " of " << answered[s] << " answered right\n";
+    for (const GradedAnswer& a : g.answers) {
+      if (a.student != s) continue;
+      if (o.json) list.push_back({{"step", a.question->step}, {"type", quiz_type_name(a.question->type)}, {"right", a.right}, {"answer", a.given}, {"expected", a.expected}});
+      else std::cout << "  " << label(*a.question) << ": " << (a.right ? "right: " + a.expected : "wrong: answered " + a.given + ", the exact run gives " + a.expected) << '\n';
+    }
+    if (o.json)
+      std::cout << Json{{"student", g.students[s]}, {"right", right[s]}, {"answered", answered[s]}, {"answers", list}}.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
+  }
+  for (const Question& q : questions) {
+    const auto [r, n] = question_tally(q);
+    if (o.json) std::cout << Json{{"question", q.step}, {"type", quiz_type_name(q.type)}, {"prompt", q.prompt}, {"right", r}, {"answered", n}}.dump() << '\n';
+    else std::cout << label(q) << ": " << (n ? std::to_string(r) + " of " + std::to_string(n) + " right" : std::string("not answered")) << '\n';
+  }
+  const std::string plural_q = questions.size() == 1 ? " question" : " questions", plural_s = g.students.size() == 1 ? " student" : " students";
+  if (o.json)
+    std::cout << Json{{"class", {{"students", g.students.size()}, {"right", total_right}, {"answered", g.answers.size()}, {"questions", questions.size()}, {"skipped", g.skipped.size()}}}}.dump() << '\n';
+  else
+    std::cout << "class: " << total_right << " of " << g.answers.size() << " answers right; " << g.students.size() << plural_s << ", " << questions.size()
+              << plural_q << " in the lesson" << (g.skipped.empty() ? "" : "; " + std::to_string(g.skipped.size()) + " lines skipped (listed on stderr)") << '\n';
+}
+
+}  // namespace
+
 int run_quiz(const QuizOptions& o) {
-  if (o.answers.empty() == !o.list) throw InputError("quiz: give --answers FILE.jsonl or --list");
+  if (o.answers.empty() == !o.list) throw InputError("quiz: give --answers FILE.jsonl... or --list");
   const Lesson lesson = load_lesson(o.lesson);
   Budget budget;
   budget.max_steps = o.max_steps;
@@ -39,41 +98,13 @@ int run_quiz(const QuizOptions& o) {
     }
     return 0;
   }
-  // Read and grade everything before printing, so that a bad line prints nothing but its error.
-  std::ifstream in = open_input_file(o.answers, "answers file");
-  std::vector<std::string> out;
-  int right = 0, graded = 0;
-  std::string line;
-  for (std::size_t n = 1; read_line(in, line, 1 << 16, "answers line " + std::to_string(n)); ++n) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::string at = o.answers + ":" + std::to_string(n);
-    try {
-      const Json a = parse_json_text(line, "answer");
-      if (!a.is_object()) throw InputError("expected {\"step\": N, \"answer\": ...}");
-      only_keys_optional(a, {"step", "answer"}, {"student"}, "answer");
-      if (a.contains("student") && !a["student"].is_string()) throw InputError("\"student\" must be a string");
-      const auto step = static_cast<std::size_t>(parse_integer(a["step"], "step", 0, std::int64_t{1} << 40));
-      const auto q = std::find_if(questions.begin(), questions.end(), [&](const Question& x) { return x.step == step; });
-      if (q == questions.end()) throw InputError("no question at step " + std::to_string(step) + " (see --list)");
-      const Grade g = grade(*q, a["answer"]);
-      right += g.right, ++graded;
-      const std::string student = a.value("student", "");
-      if (o.json) {
-        Json j{{"step", step}, {"type", quiz_type_name(q->type)}, {"right", g.right}, {"expected", q->answer}};
-        if (!student.empty()) j["student"] = student;
-        out.push_back(j.dump());
-      } else {
-        out.push_back((student.empty() ? "" : student + "  ") + "step " + std::to_string(step) + " " + std::string(quiz_type_name(q->type)) + ": " +
-                      (g.right ? "right: " + g.expected : "wrong: answered " + answer_text(*q, normal_answer(*q, a["answer"])) + ", the exact run gives " + g.expected));
-      }
-    } catch (const InputError& e) {
-      throw InputError(at + ": " + e.what());
-    }
-  }
-  for (const std::string& l : out) std::cout << l << '\n';
-  if (o.json) std::cout << Json{{"score", right}, {"answered", graded}, {"questions", questions.size()}}.dump() << '\n';
-  else std::cout << "score: " << right << " of " << graded << " answered right (" << questions.size() << (questions.size() == 1 ? " question" : " questions") << " in the lesson)\n";
-  return 0;
+  std::vector<std::filesystem::path> files;
+  for (const std::string& path : o.answers)
+    for (auto& f : answer_files(path)) files.push_back(std::move(f));
+  const ClassGrades g = grade_class(questions, files);
+  print_grades(g, questions, o);
+  for (const std::string& line : g.skipped) std::cerr << "stepwise: skipped " << line << '\n';
+  return g.skipped.empty() ? 0 : 1;
 }
 
 CLI::App* add_lint_command(CLI::App& group, LintOptions& o) {

@@ -16,6 +16,7 @@ class QuizSession {
     std::size_t step;
     Grade grade;
     std::string answer;  // as text ("(3, 4)", a line name, "negative", "hit")
+    Json given;          // in the truth's form ([3, 4], a line name, -1, true): what a saved answer holds
   };
 
   bool on() const { return on_; }
@@ -38,6 +39,8 @@ class QuizSession {
   std::optional<Grade> answer(std::size_t step, const Json& answer);
   // Right answers, answers.
   std::pair<int, int> score() const;
+  // The answers in the order given (grading.hpp writes them for `stepwise quiz`).
+  const std::vector<Answered>& answers() const { return answered_; }
 
  private:
   bool on_ = false;

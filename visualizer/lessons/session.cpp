@@ -4,6 +4,8 @@
 // [SECTION] the quiz
 // The lessons of the manifest: session_lessons.cpp.
 #include "lessons/session.hpp"
+#include "lessons/grading.hpp"
+#include "output.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -276,6 +278,30 @@ bool Session::set_quiz(bool on) {
   return true;
 }
 
-std::optional<Grade> Session::answer(const Json& a) { return quiz_.answer(step(), a); }
+std::optional<Grade> Session::answer(const Json& a) {
+  const std::optional<Grade> g = quiz_.answer(step(), a);
+  if (const std::filesystem::path file = answers_file(); g && !file.empty()) {
+    try {
+      std::filesystem::create_directories(answers_dir_);
+      OutputFile out(file);
+      out.stream() << answers_jsonl(quiz_, student_);
+      out.commit();
+      answers_error_.clear();
+    } catch (const std::exception& e) {
+      answers_error_ = "cannot save the answers: " + one_line(e.what(), 200);
+    }
+  }
+  return g;
+}
+
+void Session::save_answers_in(std::filesystem::path dir, std::string student) {
+  answers_dir_ = std::move(dir);
+  student_ = std::move(student);
+}
+
+std::filesystem::path Session::answers_file() const {
+  if (answers_dir_.empty() || !lesson_) return {};
+  return answers_dir_ / (lesson_->path.stem().string() + ".jsonl");
+}
 
 }  // namespace sw::vis

@@ -115,6 +115,14 @@ class Session {
   // or nullopt if none waits.
   std::optional<Grade> answer(const Json& answer);
   std::pair<int, int> quiz_score() const { return quiz_.score(); }
+  // Saves each answer as it is given into DIR/<lesson file stem>.jsonl, under the student's name
+  // (grading.hpp's lines, which `stepwise quiz` grades), rewriting the file whole; an empty DIR
+  // saves nothing. A failure is kept in answers_error(), not thrown: the quiz goes on.
+  void save_answers_in(std::filesystem::path dir, std::string student);
+  // Where the open lesson's answers go ("" when not saved), and the last save's failure ("" if none).
+  std::filesystem::path answers_file() const;
+  const std::string& answers_error() const { return answers_error_; }
+  const std::string& student() const { return student_; }
 
   // [SECTION] the lessons of the manifest (session_lessons.cpp)
   const std::vector<std::filesystem::path>& lessons() const { return lessons_; }
@@ -151,6 +159,8 @@ class Session {
   Timeline timeline_;
   std::optional<std::size_t> focus_;
   QuizSession quiz_;
+  std::filesystem::path answers_dir_;
+  std::string student_, answers_error_;
   std::string error_, edit_error_;
 };
 

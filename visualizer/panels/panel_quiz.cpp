@@ -1,6 +1,7 @@
 // Quiz mode's panel, under the narration: the score, the waiting question's prompt and its answer
 // buttons, then the grade and the explanation. The quiz itself is the Session's QuizSession
 // (lessons/quiz_session.hpp): its questions, the gate that stops stepping, the answers.
+#include "lessons/grading.hpp"
 #include "panels/panels.hpp"
 
 namespace sw::vis {
@@ -10,7 +11,11 @@ void draw_quiz(Session& s, const Chrome& c) {
   const QuizSession& quiz = s.quiz_session();
   const std::size_t step = s.step();
   const auto [right, asked] = quiz.score();
-  ImGui::TextColored(theme::kDim, "Quiz: %d of %d right, %zu questions in this lesson", right, asked, quiz.questions().size());
+  const std::size_t n = quiz.questions().size();
+  ImGui::TextColored(theme::kDim, "Quiz: %d of %d right, %zu %s in this lesson", right, asked, n, n == 1 ? "question" : "questions");
+  if (!s.answers_error().empty()) ImGui::TextColored(theme::kError, "%s", s.answers_error().c_str());
+  else if (const auto file = s.answers_file(); !file.empty() && asked > 0)
+    ImGui::TextColored(theme::kDim, "Saved as %s in %s", printable_name(s.student()).c_str(), file.string().c_str());
   const QuizSession::Answered* done = quiz.answered(step);
   const Question* q = quiz.pending(step);
   const Question* at = quiz.at(step);
