@@ -78,7 +78,7 @@ static int run_command(int argc, char** argv) {
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
 
   std::string alg_id, input_arg, numeric = "double", out_path, inputs_path, trace_path;
-  bool decisions_only = false, json = false;
+  bool decisions_only = false, results_only = false, json = false;
   int repeats = 3;
   Budget budget;
   std::vector<std::string> bench_numerics;
@@ -100,7 +100,8 @@ static int run_command(int argc, char** argv) {
 
   auto* check = app.add_subcommand("check", "Replay a trace against the exact oracle; exit 0 agree, 1 diverge, 2 malformed");
   check->add_option("trace", trace_path, "Trace file (JSONL), or - for standard input")->required();
-  check->add_flag("--decisions-only", decisions_only, "Compare lines, kinds, integers and pixels, not rounded numbers");
+  auto* decisions = check->add_flag("--decisions-only", decisions_only, "Compare lines, kinds, integers and pixels, not rounded numbers; a step may leave out its geometry");
+  check->add_flag("--results-only", results_only, "Compare the result alone; the steps are read past")->excludes(decisions);
   check->add_option("--max-steps", budget.max_steps, "Refuse traces whose replay implies more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
 
   auto* bench = app.add_subcommand("bench", "Accuracy against time in every numeric mode, on seeded sets");
@@ -182,11 +183,12 @@ static int run_command(int argc, char** argv) {
     }
     if (*check) {
       CheckReport rep;
+      const CheckScope scope = results_only ? CheckScope::result : decisions_only ? CheckScope::decisions : CheckScope::everything;
       if (trace_path == "-") {
-        rep = check_trace(std::cin, decisions_only, budget);
+        rep = check_trace(std::cin, scope, budget);
       } else {
         std::ifstream in = open_input_file(trace_path, "trace file");
-        rep = check_trace(in, decisions_only, budget);
+        rep = check_trace(in, scope, budget);
       }
       (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << one_line(rep.message, 2000) << '\n';
       return rep.status;

@@ -80,6 +80,32 @@ std::string item_kind(const Json& item) {
   return "";
 }
 
+// The listing a step's line counts in: the algorithm's own, or a nested callee's ("in"); nullptr for
+// an inner scope that is not in the catalog (scene-hit: its lines are named by number only).
+// Looked up only for a message, not per step.
+const Listing* listing_of(const Json& step, const Listing& own) {
+  const std::string in = step.contains("in") && step["in"].is_string() ? step["in"].get<std::string>() : "";
+  if (in.empty()) return &own;
+  const auto& all = catalog();
+  const auto it = std::find_if(all.begin(), all.end(), [&](const Algorithm& a) { return a.id == in; });
+  return it == all.end() ? nullptr : &it->listing;
+}
+
+// "line 6 (plot: plot p)" for the replay's step: where a student looks in the listing.
+std::string line_label(const Json& want, const Listing& own) {
+  const Listing* l = listing_of(want, own);
+  const auto id = want.at("line").get<std::int64_t>();
+  std::string s = "line " + std::to_string(id);
+  if (want.contains("in")) s += " of " + want["in"].get<std::string>();
+  if (l && id >= 1 && id <= static_cast<std::int64_t>(l->lines.size())) {
+    std::string text;  // the listing's indentation and column padding collapsed to single spaces
+    for (char c : l->lines[id - 1].text)
+      if (c != ' ' || (!text.empty() && text.back() != ' ')) text += c;
+    s += " (" + std::string(l->lines[id - 1].name) + ": " + one_line(text, 120) + ")";
+  }
+  return s;
+}
+
 // What differs between the replay's step and the trace's, or nothing. Names the field.
 std::optional<std::string> step_diff(const Json& want, const Json& got, const Tolerance& tol, const Listing& listing) {
   // Steps inside a nested call name the callee ("in") and count lines in its listing.
@@ -88,12 +114,7 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
     return "listing: expected a step of " + (want_in.empty() ? std::string("the algorithm itself") : want_in) + ", got one of " + (got_in.empty() ? std::string("the algorithm itself") : got_in);
   // Lines are named only in a message: the callee's listing is looked up then, not per step.
   auto line_name = [&](const Json& l) {
-    const Listing* lst = &listing;
-    if (!want_in.empty()) {
-      const auto& all = catalog();
-      const auto it = std::find_if(all.begin(), all.end(), [&](const Algorithm& a) { return a.id == want_in; });
-      lst = it == all.end() ? nullptr : &it->listing;  // an inner scope (scene-hit): lines by number
-    }
+    const Listing* lst = listing_of(want, listing);
     const auto id = l.get<std::int64_t>();
     return l.dump() + (lst && id >= 1 && id <= static_cast<std::int64_t>(lst->lines.size()) ? " (" + std::string(lst->lines[id - 1].name) + ")" : "");
   };
@@ -110,6 +131,7 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
   }
   for (auto it = gv.begin(); it != gv.end(); ++it)
     if (!wv.contains(it.key())) return "variable " + it.key() + ": not recorded by the algorithm at this step";
+  if (!got.contains("geo")) return std::nullopt;  // left out, as --decisions-only allows
   const Json& wg = want.at("geo");
   const Json& gg = got.at("geo");
   if (wg.size() != gg.size()) return "geo: expected " + std::to_string(wg.size()) + " items, got " + std::to_string(gg.size());
@@ -137,14 +159,16 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
   return std::nullopt;
 }
 
-void require_step_shape(const Json& j, std::size_t lineno) {
+// geometry false: "geo" may be left out (--decisions-only); stated, it is read and compared.
+void require_step_shape(const Json& j, std::size_t lineno, bool geometry) {
   auto bad = [&](const char* why) { throw InputError("line " + std::to_string(lineno) + ": " + why); };
   if (!j.is_object()) bad("expected a step object");
   if (!j.contains("line") || !j["line"].is_number_integer()) bad("step without an integer \"line\"");
   if (!j.contains("kind") || !j["kind"].is_string()) bad("step without a string \"kind\"");
   if (!j.contains("vars") || !j["vars"].is_object()) bad("step without a \"vars\" object");
-  if (!j.contains("geo") || !j["geo"].is_array()) bad("step without a \"geo\" array");
-  for (const Json& item : j["geo"]) {
+  if ((geometry || j.contains("geo")) && (!j.contains("geo") || !j["geo"].is_array())) bad("step without a \"geo\" array");
+  static const Json kNoGeometry = Json::array();
+  for (const Json& item : j.contains("geo") ? j["geo"] : kNoGeometry) {
     if (!item.is_object()) bad("a geometry item that is not an object");
     std::size_t kinds = 0;
     for (auto it = item.begin(); it != item.end(); ++it) {
@@ -179,7 +203,7 @@ void require_step_shape(const Json& j, std::size_t lineno) {
 
 }  // namespace
 
-CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& budget) {
+CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget) {
   CheckReport rep;
   std::string line;
   std::size_t lineno = 0;
@@ -223,10 +247,12 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
     const Run run = alg.open(input, replay_mode);
     run.check_budget(budget);
-    const Tolerance tol{mode_tolerance(mode), !decisions_only};
+    const Tolerance tol{mode_tolerance(mode), scope == CheckScope::everything};
+    const bool geometry_required = scope == CheckScope::everything;
     const bool rounded = tol.rel > 0 && mode != Numeric::reference;
-    auto diverged = [&](const std::string& where, const std::string& what) {
-      std::string m = where + " diverges (trace line " + std::to_string(lineno) + "): " + what;
+    // "step 12 diverges at line 9 (advance: q <- q + dp) (trace line 14): variable x: ..."
+    auto diverged = [&](const std::string& where, const std::string& what, const std::string& at = "") {
+      std::string m = where + " diverges" + (at.empty() ? "" : " at " + at) + " (trace line " + std::to_string(lineno) + "): " + what;
       if (rounded && what.find("beyond the tolerance") != std::string::npos)
         m += "; only values differ: --decisions-only compares the decisions alone";
       return Diverged{m};
@@ -243,6 +269,7 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
         if (rounded) replay_result = text;
         return;
       }
+      if (scope == CheckScope::result) return;  // the trace's steps are read past below
       if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
       if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
         ++i;
@@ -252,11 +279,12 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
       pending = parse_json_text(line, "line " + std::to_string(lineno));
       bounded(*pending);
       const std::string where = "step " + std::to_string(i);
-      if (is_result(*pending)) throw diverged(where, "the trace ends its steps here; the algorithm has more");
-      require_step_shape(*pending, lineno);
+      auto at = [&] { return line_label(want, alg.listing); };  // looked up for a message only
+      if (is_result(*pending)) throw diverged(where, "the trace ends its steps here; the algorithm has more", at());
+      require_step_shape(*pending, lineno, geometry_required);
       if (pending->contains("step") && (*pending)["step"] != Json(i))
-        throw diverged(where, "step: expected " + std::to_string(i) + ", got " + show((*pending)["step"]) + " (steps are numbered from 0, in order)");
-      if (auto d = step_diff(want, *pending, tol, alg.listing)) throw diverged(where, *d);
+        throw diverged(where, "step: expected " + std::to_string(i) + ", got " + show((*pending)["step"]) + " (steps are numbered from 0, in order)", at());
+      if (auto d = step_diff(want, *pending, tol, alg.listing)) throw diverged(where, *d, at());
       pending.reset();
       ++i;
     });
@@ -266,8 +294,12 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
 
     auto last = next_line();
     if (last) bounded(*last);
+    while (scope == CheckScope::result && last && !is_result(*last)) {  // --results-only: steps are not read
+      last = next_line();
+      if (last) bounded(*last);
+    }
     if (last && !is_result(*last)) {
-      require_step_shape(*last, lineno);
+      require_step_shape(*last, lineno, geometry_required);
       throw diverged("step " + std::to_string(i), "the algorithm ends its steps here; the trace has more");
     }
     if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
@@ -290,8 +322,13 @@ CheckReport check_trace(std::istream& in, bool decisions_only, const Budget& bud
     }
     if (d) throw diverged("result", *d);
     rep.steps = i;
-    rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + std::string(replay_mode == Numeric::reference ? "reference" : replay_mode == Numeric::f64 ? "double replay and its oracle" : "exact oracle") +
-                  (tol.rel > 0 && tol.numbers ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))" : "");
+    const std::string judge = replay_mode == Numeric::reference ? "reference" : replay_mode == Numeric::f64 ? "double replay and its oracle" : "exact oracle";
+    if (scope == CheckScope::result) rep.message = "ok: the result agrees with the " + judge + " (steps not compared: --results-only)";
+    else
+      rep.message = "ok: " + std::to_string(i) + " steps and the result agree with the " + judge +
+                    (scope == CheckScope::decisions ? " (decisions only: lines, kinds and integers)"
+                     : tol.rel > 0                 ? " (numbers within " + show(Json(tol.rel.get_str())) + " x (1 + |expected|))"
+                                                   : "");
   } catch (const Diverged& d) {
     rep.status = 1;
     rep.message = d.message;

@@ -29,14 +29,19 @@ std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& inputs, std
 Rational mode_tolerance(Numeric n);
 
 // `stepwise check` (check.cpp): replays a trace in exact (or reference) mode step by step, holding
-// its numbers to mode_tolerance, and its result against the oracle. decisions_only compares
-// lines, kinds, integer variables and decision geometry, not numbers.
+// its numbers to mode_tolerance, and its result against the oracle.
+enum class CheckScope : std::uint8_t {
+  everything,  // every step's line, kind, variables and geometry, then the result
+  decisions,   // --decisions-only: lines, kinds, integer variables and decision geometry (which may be
+               // left out), then the result
+  result,      // --results-only: the result alone; the steps are read past, whatever they hold
+};
 struct CheckReport {
   int status = 0;  // 0 agree, 1 diverge, 2 malformed
   std::string message;
   std::size_t steps = 0;
 };
 // The replay's work is held to `budget` (its max_steps) before it starts.
-CheckReport check_trace(std::istream& trace, bool decisions_only, const Budget& budget = {});
+CheckReport check_trace(std::istream& trace, CheckScope scope = CheckScope::everything, const Budget& budget = {});
 
 }  // namespace sw

@@ -22,7 +22,7 @@ std::vector<Json> trace_lines(const char* alg, const char* input, Numeric n) {
 CheckReport check(const std::vector<Json>& lines, bool decisions_only = false) {
   std::stringstream s;
   for (const Json& l : lines) s << l.dump() << '\n';
-  return check_trace(s, decisions_only);
+  return check_trace(s, decisions_only ? CheckScope::decisions : CheckScope::everything);
 }
 
 // The index (in `lines`) of the first step with this kind that records `var`.
@@ -233,4 +233,56 @@ TEST_CASE("check: a step numbered out of sequence fails, content after the resul
     CHECK(t.status == 2);
     CHECK_THAT(t.message, Catch::Contains("content after the result line"));
   }
+}
+
+TEST_CASE("check: --decisions-only takes steps without geometry, --results-only reads past the steps", "[check]") {
+  std::vector<Json> lines = trace_lines("dda-line", kDda, Numeric::f64);
+  auto scoped = [](const std::vector<Json>& t, CheckScope scope) {
+    std::stringstream s;
+    for (const Json& l : t) s << l.dump() << '\n';
+    return check_trace(s, scope);
+  };
+  // A student's trace that records no geometry: malformed in full, fine when only decisions count.
+  std::vector<Json> bare = lines;
+  for (std::size_t i = 1; i + 1 < bare.size(); ++i) bare[i].erase("geo");
+  CHECK(scoped(bare, CheckScope::everything).status == 2);
+  const CheckReport ok = scoped(bare, CheckScope::decisions);
+  INFO(ok.message);
+  CHECK(ok.status == 0);
+  CHECK_THAT(ok.message, Catch::Contains("decisions only"));
+  // Still held: an integer (a plotted pixel's row) changed in a step, or a wrong result.
+  const std::size_t plot = find_step(bare, "plot", "j");
+  std::vector<Json> wrong = bare;
+  wrong[plot]["vars"]["j"] = wrong[plot]["vars"]["j"].get<int>() + 1;
+  CHECK(scoped(wrong, CheckScope::decisions).status == 1);
+  wrong = bare;
+  wrong.back()["result"]["pixels"][0][0] = 99;
+  CHECK(scoped(wrong, CheckScope::decisions).status == 1);
+  // The result alone: steps thrown away, or garbage in their place, pass; a wrong result fails.
+  const std::vector<Json> result_only = {lines.front(), lines.back()};
+  const CheckReport r = scoped(result_only, CheckScope::result);
+  INFO(r.message);
+  CHECK(r.status == 0);
+  CHECK_THAT(r.message, Catch::Contains("--results-only"));
+  CHECK(scoped({lines.front(), Json{{"anything", 1}}, lines.back()}, CheckScope::result).status == 0);
+  CHECK(scoped(result_only, CheckScope::everything).status == 1);
+  wrong = result_only;
+  wrong.back()["result"]["pixels"][0][0] = 99;
+  CHECK(scoped(wrong, CheckScope::result).status == 1);
+  CHECK(scoped({lines.front()}, CheckScope::result).status == 2);  // still needs its result
+}
+
+TEST_CASE("check: a divergence names the listing line a student looks at: number, name and text", "[check]") {
+  std::vector<Json> lines = trace_lines("dda-line", kDda, Numeric::exact);
+  const std::size_t plot = find_step(lines, "plot", "j");
+  lines[plot]["vars"]["j"] = lines[plot]["vars"]["j"].get<int>() + 1;
+  const CheckReport r = check(lines);
+  INFO(r.message);
+  const Listing& l = find_algorithm("dda-line").listing;
+  const auto id = lines[plot]["line"].get<std::size_t>();
+  REQUIRE(id >= 1);
+  REQUIRE(id <= l.lines.size());
+  CHECK_THAT(r.message, Catch::StartsWith("step " + std::to_string(plot - 1) + " diverges at line " + std::to_string(id) + " (" +
+                                          std::string(l.lines[id - 1].name) + ": "));
+  CHECK_THAT(r.message, Catch::Contains(std::string(l.lines[id - 1].text).substr(0, 20)));
 }

@@ -81,7 +81,7 @@ std::size_t round_trip_family(std::string_view family) {
         ++traces;
         for (const std::string& text : {trace.str(), round_trip(trace.str())}) {
           std::istringstream in(text);
-          const CheckReport rep = check_trace(in, false);
+          const CheckReport rep = check_trace(in);
           INFO(alg.id << " " << numeric_name(n) << " " << input.dump().substr(0, 300) << "\n" << rep.message.substr(0, 600));
           CHECK(rep.status != 2);
           if (n == Numeric::exact || n == Numeric::reference || n == Numeric::integer || n == Numeric::filtered) CHECK(rep.status == 0);

@@ -82,7 +82,7 @@ TEST_CASE("probe: check reads colour and list variables and refuses malformed on
     t[1]["vars"]["extra"] = Json::parse(var);
     std::stringstream in;
     for (const Json& l : t) in << l.dump() << '\n';
-    return check_trace(in, false);
+    return check_trace(in);
   };
   for (const char* ok : {R"({"rgb":["1/2",0,1]})", "[1,2,3,4,5]", "[]", R"(["1/3",2])"}) {
     INFO(ok);

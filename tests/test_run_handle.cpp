@@ -51,7 +51,7 @@ TEST_CASE("run handle: trace, run and check parse each input once, and a mesh fi
     // `stepwise check`: the replay and the oracle on one parse.
     {
       const Counts c;
-      const CheckReport rep = check_trace(trace, false);
+      const CheckReport rep = check_trace(trace);
       INFO(rep.message);
       CHECK(rep.status == 0);
       CHECK(c.more_inputs() == 1);

@@ -147,14 +147,14 @@ TEST_CASE("curves bezier: check follows the nested listing and names a step from
   const Json in = Json::parse(alg.example);
   std::stringstream good;
   write_trace(alg.open(in, Numeric::exact), good);
-  CHECK(check_trace(good, false).status == 0);
+  CHECK(check_trace(good).status == 0);
   // Move the first nested step out of dda-line's listing: the replay names the listing.
   std::string text = good.str();
   const auto at = text.find(",\"in\":\"dda-line\"");
   REQUIRE(at != std::string::npos);
   text.erase(at, std::string(",\"in\":\"dda-line\"").size());
   std::stringstream bad(text);
-  const CheckReport rep = check_trace(bad, false);
+  const CheckReport rep = check_trace(bad);
   CHECK(rep.status == 1);
   CHECK_THAT(rep.message, Catch::Contains("listing: expected a step of dda-line"));
 }
