@@ -73,7 +73,7 @@ static int run_command(int argc, char** argv) {
   std::string list_listing;
   list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
   list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input");
-  list->add_option("--listing", list_listing, "Print one algorithm's listing: line id, name and text");
+  auto* listing_opt = list->add_option("--listing", list_listing, "Print one algorithm's listing: line id, name and text");
 
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
 
@@ -108,9 +108,9 @@ static int run_command(int argc, char** argv) {
   bench->add_option("algorithm", alg_id, "Algorithm id")->required();
   bench->add_flag("--json", json, "One JSON object per line per mode and set");
   bench->add_option("--numeric", bench_numerics, "Only these modes (repeatable)");
-  bench->add_option("--set", bench_set, "Only this input set (e.g. random, long)");
+  auto* set_opt = bench->add_option("--set", bench_set, "Only this input set (e.g. random, long)");
   bench->add_option("--repeats", repeats, "Timed repeats; the best is reported")->check(CLI::Range(1, 100));
-  bench->add_option("--plot", bench_plot, "Also draw the results as a chart: FILE.png or FILE.svg");
+  auto* plot_opt = bench->add_option("--plot", bench_plot, "Also draw the results as a chart: FILE.png or FILE.svg");
   bench->add_option("--plot-size", bench_plot_size, "The chart's size WxH (default 1280x720)");
 
   sw::cli::SceneCommands scene_cmds;
@@ -156,7 +156,7 @@ static int run_command(int argc, char** argv) {
         std::cout << catalog_jsonl();
         return 0;
       }
-      if (!list_listing.empty()) {
+      if (listing_opt->count()) {
         const Algorithm& alg = find_algorithm(list_listing);
         std::printf("%s\n", std::string(alg.listing.title).c_str());
         for (std::size_t i = 0; i < alg.listing.lines.size(); ++i)
@@ -195,6 +195,9 @@ static int run_command(int argc, char** argv) {
     }
     if (*bench) {
       const Algorithm& alg = find_algorithm(alg_id);
+      // Given empty, they would mean "not given" (every set, no plot): refused instead.
+      if (set_opt->count() && bench_set.empty()) throw InputError("--set: give a set's name (e.g. random, long)");
+      if (plot_opt->count() && bench_plot.empty()) throw InputError("--plot: give a file name (.png or .svg)");
 #ifdef SW_HAVE_RENDER
       std::pair<int, int> plot_size;
       if (!bench_plot.empty()) plot_size = sw::vis::check_plot_target(bench_plot, bench_plot_size);

@@ -47,8 +47,9 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
 namespace {
 
 // --size WxH into w, h (left as they are when the option is not given).
-void parse_size(const std::string& size, std::int64_t& w, std::int64_t& h) {
-  if (size.empty()) return;
+void parse_size(const std::optional<std::string>& given, std::int64_t& w, std::int64_t& h) {
+  if (!given) return;
+  const std::string& size = *given;
   std::smatch m;
   if (!std::regex_match(size, m, std::regex("([0-9]{1,5})x([0-9]{1,5})"))) throw InputError("--size: expected WxH, e.g. 320x240, got '" + size.substr(0, 40) + "'");
   w = std::stoll(m[1]), h = std::stoll(m[2]);
@@ -60,7 +61,8 @@ int export_pov(const SceneCommands& c) {
   const tracer::Scene s = tracer::read_scene_file(c.file);
   tracer::PovOptions o;
   o.mode = c.mode == "ids" ? tracer::PovMode::ids : c.mode == "shadow" ? tracer::PovMode::shadow : tracer::PovMode::image;
-  o.light = c.light;
+  if (c.light < 0) throw InputError("--light: a light's index, 0 or more, got " + std::to_string(c.light));
+  o.light = static_cast<std::size_t>(c.light);
   parse_size(c.size, o.width, o.height);
   const tracer::PovScene pov = tracer::export_pov(s, o);
   OutputFile out(c.out);
@@ -74,12 +76,13 @@ int render(const SceneCommands& c) {
   const tracer::Scene s = tracer::read_scene_file(c.file);
   tracer::RenderOptions o;
   parse_size(c.size, o.width, o.height);
-  if (c.spp != 0) {
-    const auto n = static_cast<std::int64_t>(std::llround(std::sqrt(double(c.spp))));
-    if (c.spp < 1 || c.spp > 256 || n * n != c.spp) throw InputError("--spp: must be a square in [1, 256] (1, 4, 9, ..., 256), got " + std::to_string(c.spp));
+  if (c.spp) {
+    const std::int64_t spp = *c.spp;
+    const auto n = static_cast<std::int64_t>(std::llround(std::sqrt(double(std::max<std::int64_t>(spp, 0)))));
+    if (spp < 1 || spp > 256 || n * n != spp) throw InputError("--spp: must be a square in [1, 256] (1, 4, 9, ..., 256), got " + std::to_string(spp));
     if (c.adaptive) throw InputError("--spp and --adaptive exclude each other");
-    if (n * n > s.rays_per_pixel) throw InputError("--spp: " + std::to_string(c.spp) + " primary rays exceed the scene's rays_per_pixel " + std::to_string(s.rays_per_pixel));
-    o.spp = c.spp;
+    if (n * n > s.rays_per_pixel) throw InputError("--spp: " + std::to_string(spp) + " primary rays exceed the scene's rays_per_pixel " + std::to_string(s.rays_per_pixel));
+    o.spp = spp;
   }
   o.adaptive = c.adaptive, o.all_effects = c.all_effects, o.threads = c.threads;
   o.max_rays = c.max_rays;

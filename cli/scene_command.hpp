@@ -4,6 +4,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include "tracer/render.hpp"
 
@@ -15,13 +16,14 @@ struct SceneCommands {
   CLI::App *check = nullptr, *plan = nullptr, *render = nullptr, *export_pov = nullptr;
   std::string file;
   bool json = false;
-  std::string out, size, offset = "robust";
-  std::int64_t spp = 0;
+  std::string out, offset = "robust";
+  std::optional<std::string> size;  // given or not: an empty --size is refused, not ignored
+  std::optional<std::int64_t> spp;
   bool adaptive = false, all_effects = false, quiet = false;
   unsigned threads = 0;
   std::uint64_t max_rays = tracer::kDefaultMaxRays;  // render: the work budget
   std::string mode = "image";  // export-pov
-  std::size_t light = 0;
+  std::int64_t light = 0;
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

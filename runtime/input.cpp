@@ -135,14 +135,18 @@ std::ifstream open_input_file(const std::string& path, std::string_view what) {
 Json read_input_arg(const std::string& arg) {
   const auto first = arg.find_first_not_of(" \t\r\n");
   if (first != std::string::npos && (arg[first] == '{' || arg[first] == '[')) return parse_json_text(arg, "input");
-  std::ifstream f = open_input_file(arg, "input file");
+  return parse_json_text(read_file_bounded(arg, "input file", kMaxJsonBytes), "input file '" + arg + "'");
+}
+
+std::string read_file_bounded(const std::string& path, std::string_view what, std::size_t max) {
+  std::ifstream f = open_input_file(path, what);
   std::string text;
   char buf[1 << 16];
-  while (f.read(buf, sizeof buf) || f.gcount() > 0) {  // a FIFO has no size: read in blocks, bounded
+  while (f.read(buf, sizeof buf) || f.gcount() > 0) {  // a FIFO or a device has no size: read in blocks, bounded
     text.append(buf, static_cast<std::size_t>(f.gcount()));
-    if (text.size() > kMaxJsonBytes) throw InputError("input file '" + arg + "': more than " + std::to_string(kMaxJsonBytes >> 20) + " MiB");
+    if (text.size() > max) throw InputError(std::string(what) + " '" + one_line(path, 200) + "': more than " + std::to_string(max >> 10) + " KiB");
   }
-  return parse_json_text(text, "input file '" + arg + "'");
+  return text;
 }
 
 std::string one_line(std::string_view message, std::size_t max) {

@@ -42,6 +42,8 @@ bool read_line(std::istream& in, std::string& line, std::size_t max, const std::
 void require_regular_file(const std::string& path, const std::string& what);
 // Opens a file to read, or throws InputError naming `what`: missing, unreadable, a directory.
 std::ifstream open_input_file(const std::string& path, std::string_view what);
+// The whole file (or FIFO or device), read in blocks; throws InputError naming `what` past max bytes.
+std::string read_file_bounded(const std::string& path, std::string_view what, std::size_t max);
 // A message as one line for a terminal: control characters escaped (\n, \t, \xNN), cut to about
 // `max` bytes with "..." (echoed input may be a megabyte long; echo points cut it shorter).
 std::string one_line(std::string_view message, std::size_t max = 1000);

@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
   lesson->excludes(alg);
   cli.add_option("--numeric", o.numeric, "Number type");
   cli.add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
-  cli.add_option("--step", o.step, "Start at this step");
+  cli.add_option("--step", o.step, "Start at this step")->check(CLI::Validator(budget_count_error, "STEP"));
   cli.add_option("--max-steps", o.budget.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
   cli.add_option("--size", o.size, "Window size WxH");
   cli.add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (a projector: 1.5 to 2)");

@@ -14,8 +14,8 @@ void add_lesson_commands(CLI::App& app, LessonCommands& c) {
   c.export_cmd->add_option("--html", e.html_dir, "Directory to write (new, empty, or an earlier export, which is replaced)")
       ->required();
   c.export_cmd->add_option("--size", e.size, "Frame size WxH (default 1280x800)");
-  c.export_cmd->add_option("--from", e.from, "First step of the page (default 0)");
-  c.export_cmd->add_option("--to", e.to, "Last step of the page, inclusive (default: the last step)");
+  c.export_cmd->add_option("--from", e.from, "First step of the page (default 0)")->check(CLI::Validator(budget_count_error, "STEP"));
+  c.export_cmd->add_option("--to", e.to, "Last step of the page, inclusive (default: the last step)")->check(CLI::Validator(budget_count_error, "STEP"));
   c.export_cmd->add_option("--max-pixels", e.max_pixels, "Refuse a page of more frames x width x height (default " + std::to_string(kDefaultPagePixels) + ")")->check(CLI::Validator(budget_count_error, "COUNT"));
   c.export_cmd->add_option("--max-steps", e.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
   c.lint_cmd = add_lint_command(*c.group, c.lint_opts);

@@ -37,12 +37,12 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   alg->needs(input);
   r->add_option("--numeric", o.numeric, "Number type (default: the lesson's, else double)");
   r->add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
-  r->add_option("--step", o.step, "The step to show (default: the lesson's step, else the last)");
+  r->add_option("--step", o.step, "The step to show (default: the lesson's step, else the last)")->check(CLI::Validator(budget_count_error, "STEP"));
   auto* out = r->add_option("--out", o.out, "PNG file to write");
   auto* gif = r->add_option("--gif", o.gif, "Animated GIF to write: one frame per step");
   out->excludes(gif);
-  r->add_option("--from", o.from, "First step of the GIF (default 0)")->needs(gif);
-  r->add_option("--to", o.to, "Last step of the GIF, inclusive (default: the last step)")->needs(gif);
+  r->add_option("--from", o.from, "First step of the GIF (default 0)")->needs(gif)->check(CLI::Validator(budget_count_error, "STEP"));
+  r->add_option("--to", o.to, "Last step of the GIF, inclusive (default: the last step)")->needs(gif)->check(CLI::Validator(budget_count_error, "STEP"));
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
   r->add_option("--size", o.size, "Frame size WxH (default 1280x800)");
   r->add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (default 1)");

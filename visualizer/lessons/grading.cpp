@@ -12,7 +12,8 @@ namespace fs = std::filesystem;
 std::vector<fs::path> answer_files(const std::string& path) {
   std::error_code ec;
   if (fs::is_regular_file(path, ec)) return {path};
-  if (!fs::is_directory(path, ec)) throw InputError("--answers " + one_line(path, 200) + ": no such file or directory");
+  if (!fs::is_directory(path, ec))
+    throw InputError("--answers " + one_line(path, 200) + (fs::exists(path, ec) ? ": neither a regular file nor a directory" : ": no such file or directory"));
   std::vector<fs::path> out;
   for (const auto& e : fs::directory_iterator(path, ec))
     if (e.path().extension() == ".jsonl" && e.is_regular_file(ec)) out.push_back(e.path());

@@ -260,10 +260,7 @@ Lesson parse_lesson(const std::string& raw, const std::string& where) {
 }
 
 Lesson load_lesson(const std::filesystem::path& path) {
-  std::ifstream f = open_input_file(path.string(), "lesson file");
-  std::ostringstream s;
-  s << f.rdbuf();
-  Lesson l = parse_lesson(s.str(), path.string());
+  Lesson l = parse_lesson(read_file_bounded(path.string(), "lesson file", kMaxLessonBytes), path.string());
   l.path = path;
   return l;
 }

@@ -80,6 +80,8 @@ std::string narrate(const Lesson& lesson, const TraceModel& run, std::size_t ste
 // Validates the algorithm, the numerics and the input against the catalog. A relative "mesh" file
 // in the input is taken relative to where's directory.
 Lesson parse_lesson(const std::string& text, const std::string& where);
+// A lesson file is at most this long (the longest is 5 KB): a device or a huge file is refused.
+inline constexpr std::size_t kMaxLessonBytes = std::size_t{1} << 20;
 Lesson load_lesson(const std::filesystem::path& path);
 
 // Everything wrong with a lesson, one "file:line: message" each; empty if none. Parses it, records
