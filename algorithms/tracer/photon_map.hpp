@@ -24,6 +24,18 @@ struct PhotonMap {
   spatial::Box<double, 3> bounds;  // of `at`: a point farther than the radius from it has no photon near
 };
 
+// Puts the stored photons (`at`) in the kd-tree and their bounding box; none: an empty map.
+inline void index_photons(PhotonMap& map) {
+  if (map.at.empty()) return;
+  std::vector<spatial::Box<double, 3>> boxes;
+  boxes.reserve(map.at.size());
+  for (const auto& p : map.at) boxes.push_back(spatial::Box<double, 3>::at(p));
+  NoProbe none;
+  map.tree = spatial::kd_build<double, 3>(boxes, true, none);
+  map.bounds = boxes[0];
+  for (const auto& p : map.at) map.bounds.grow(p);
+}
+
 // r is the farthest photon taken when k are within the radius, else the radius. 0 if none.
 inline Vec3<double> caustic_irradiance(const PhotonMap& map, const Vec3<double>& p) {
   if (map.at.empty() || spatial::kd_cell_d2<double, 3>(map.bounds, p) > map.radius * map.radius) return {};

@@ -59,13 +59,7 @@ void build_photon_map(const Scene& s, const TraceScene<double>& ts, unsigned thr
   }
   map.gather = s.photons.gather;
   map.radius = sgn(s.photons.radius.q) > 0 ? s.photons.radius.d : default_radius(ts);
-  std::vector<spatial::Box<double, 3>> boxes;
-  for (const auto& p : map.at) boxes.push_back(spatial::Box<double, 3>::at(p));
-  NoProbe none;
-  if (boxes.empty()) return;
-  map.tree = spatial::kd_build<double, 3>(boxes, true, none);
-  map.bounds = boxes[0];
-  for (const auto& p : map.at) map.bounds.grow(p);
+  index_photons(map);
 }
 
 }  // namespace sw::tracer

@@ -88,12 +88,7 @@ TEST_CASE("a glass ball focuses caustic photons on the floor below it", "[tracer
   std::uint64_t rays = 0;
   tracer::trace_photons(ts, 0, 0, 20000, 20000, 0, map.at, map.power, rays);
   REQUIRE(map.at.size() > 10000);  // every photon is aimed at the ball; most pass through to the floor
-  std::vector<spatial::Box<double, 3>> boxes;
-  for (const auto& p : map.at) boxes.push_back(spatial::Box<double, 3>::at(p));
-  NoProbe none;
-  map.tree = spatial::kd_build<double, 3>(boxes, true, none);
-  map.bounds = boxes[0];
-  for (const auto& p : map.at) map.bounds.grow(p);
+  tracer::index_photons(map);
   map.gather = 64, map.radius = 0.1;
   // Unblocked, the light gives the floor irradiance I cos / att = 1 (att = 1): below the ball the
   // focused photons give several times that; 3 away, outside the ball's shadow, none.
@@ -122,12 +117,7 @@ TEST_CASE("caustic irradiance: the photons within a closed radius over the disc'
   tracer::PhotonMap map;
   map.at = {{0.5, 0, 0}, {0, 1, 0}, {0, 0, 2}};
   map.power.assign(3, Vec3<double>{1, 1, 1});
-  std::vector<spatial::Box<double, 3>> boxes;
-  for (const auto& p : map.at) boxes.push_back(spatial::Box<double, 3>::at(p));
-  NoProbe none;
-  map.tree = spatial::kd_build<double, 3>(boxes, true, none);
-  map.bounds = boxes[0];
-  for (const auto& p : map.at) map.bounds.grow(p);
+  tracer::index_photons(map);
   map.radius = 1;
   map.gather = 64;
   const double pi = std::acos(-1.0);
