@@ -113,7 +113,9 @@ def main():
             fail("chromedriver did not start")
         caps = {"browserName": "chrome", "goog:loggingPrefs": {"browser": "ALL"},
                 "goog:chromeOptions": {"binary": chromium, "args": [
-                    "--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,1000",
+                    # Shared memory in /tmp, not /dev/shm: a root without a /dev/shm mount (a fresh
+                    # debootstrapped machine, a container) otherwise fails "unable to connect to renderer".
+                    "--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,1000",
                     "--user-data-dir=" + os.path.join(work, "profile")]}}
         d.sid = d.call("POST", "/session", {"capabilities": {"alwaysMatch": caps}})["sessionId"]
         check_page(d, stepwise, lesson, work, page_dir, size)
