@@ -73,7 +73,7 @@ static int run_command(int argc, char** argv) {
   std::string list_listing;
   list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
   list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input");
-  auto* listing_opt = list->add_option("--listing", list_listing, "Print one algorithm's listing: line id, name and text");
+  auto* listing_opt = list->add_option("--listing", list_listing, "Print one algorithm's listing, or a callee's (refract, scene-hit): line id, name and text");
 
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
 
@@ -157,10 +157,15 @@ static int run_command(int argc, char** argv) {
         return 0;
       }
       if (listing_opt->count()) {
-        const Algorithm& alg = find_algorithm(list_listing);
-        std::printf("%s\n", std::string(alg.listing.title).c_str());
-        for (std::size_t i = 0; i < alg.listing.lines.size(); ++i)
-          std::printf("%2zu %-14s %s\n", i + 1, std::string(alg.listing.lines[i].name).c_str(), std::string(alg.listing.lines[i].text).c_str());
+        const Listing* l = find_listing(list_listing);
+        if (!l) {
+          std::string known;
+          for (std::string_view id : listing_ids()) known += (known.empty() ? "" : ", ") + std::string(id);
+          throw InputError("no listing named '" + one_line(list_listing, 60) + "' (algorithms and their callees: " + known + ")");
+        }
+        std::printf("%s\n", std::string(l->title).c_str());
+        for (std::size_t i = 0; i < l->lines.size(); ++i)
+          std::printf("%2zu %-14s %s\n", i + 1, std::string(l->lines[i].name).c_str(), std::string(l->lines[i].text).c_str());
         return 0;
       }
       for (const Algorithm& a : catalog()) std::printf("%-26s %s\n", std::string(a.id).c_str(), std::string(a.summary).c_str());

@@ -33,6 +33,30 @@ Registrar::Registrar(Algorithm (*make)(), const char* file) {
   registrations().push_back({make, std::filesystem::path(file).parent_path().filename().string()});
 }
 
+namespace {
+std::vector<std::pair<std::string_view, Listing>>& callees() {
+  static std::vector<std::pair<std::string_view, Listing>> all;
+  return all;
+}
+}  // namespace
+
+CalleeRegistrar::CalleeRegistrar(std::string_view id, Listing listing) { callees().emplace_back(id, listing); }
+
+const Listing* find_listing(std::string_view id) {
+  for (const Algorithm& a : catalog())
+    if (a.id == id) return &a.listing;
+  for (const auto& [callee, listing] : callees())
+    if (callee == id) return &listing;
+  return nullptr;
+}
+
+std::vector<std::string_view> listing_ids() {
+  std::vector<std::string_view> ids;
+  for (const Algorithm& a : catalog()) ids.push_back(a.id);
+  for (const auto& c : callees()) ids.push_back(c.first);
+  return ids;
+}
+
 const std::vector<Algorithm>& catalog() {
   static const std::vector<Algorithm> all = [] {
     // The entries' family views point into registrations(), which is never changed again.

@@ -119,4 +119,14 @@ struct Registrar {
   Registrar(Algorithm (*make)(), const char* file);
 };
 
+// Callees that are no algorithm of their own (refract, scene-hit) but whose steps a trace holds
+// ("in": "refract"): their listings, registered beside their caller's Spec (SW_REGISTER_CALLEE).
+struct CalleeRegistrar {
+  CalleeRegistrar(std::string_view id, Listing listing);
+};
+// The listing of an algorithm or of a registered callee; nullptr if neither has this id.
+const Listing* find_listing(std::string_view id);
+// Every id find_listing knows, algorithms first.
+std::vector<std::string_view> listing_ids();
+
 }  // namespace sw

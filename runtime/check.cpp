@@ -80,15 +80,12 @@ std::string item_kind(const Json& item) {
   return "";
 }
 
-// The listing a step's line counts in: the algorithm's own, or a nested callee's ("in"); nullptr for
-// an inner scope that is not in the catalog (scene-hit: its lines are named by number only).
+// The listing a step's line counts in: the algorithm's own, or a nested callee's ("in"); nullptr
+// for a scope neither the catalog nor the callees know (its lines are then named by number only).
 // Looked up only for a message, not per step.
 const Listing* listing_of(const Json& step, const Listing& own) {
   const std::string in = step.contains("in") && step["in"].is_string() ? step["in"].get<std::string>() : "";
-  if (in.empty()) return &own;
-  const auto& all = catalog();
-  const auto it = std::find_if(all.begin(), all.end(), [&](const Algorithm& a) { return a.id == in; });
-  return it == all.end() ? nullptr : &it->listing;
+  return in.empty() ? &own : find_listing(in);
 }
 
 // "line 6 (plot: plot p)" for the replay's step: where a student looks in the listing.

@@ -210,5 +210,8 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
 // Registers Spec in the catalog, in the family of this file's folder.
 #define SW_REGISTER(Spec) \
   static const ::sw::Registrar SW_REGISTER_CONCAT(sw_registrar_, __LINE__)(&::sw::make_algorithm<Spec>, __FILE__)
+// Registers the listing of a callee that is no algorithm of its own (a struct with id and listing()).
+#define SW_REGISTER_CALLEE(Callee) \
+  static const ::sw::CalleeRegistrar SW_REGISTER_CONCAT(sw_callee_, __LINE__)(Callee::id, Callee::listing())
 
 }  // namespace sw

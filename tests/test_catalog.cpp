@@ -59,8 +59,19 @@ TEST_CASE("catalog: every listing line is reached by a step of the examples and 
       const Recorded rec = run->record();
       ++ran;
       if (const auto estimate = run->estimate_steps()) CHECK(rec.trace->size() <= *estimate);
-      for (std::size_t s = 0; s < rec.trace->size(); ++s)
+      std::set<std::uint8_t> scopes;
+      for (std::size_t s = 0; s < rec.trace->size(); ++s) {
         if (rec.trace->at(s).scope == 0) reached.insert(rec.trace->at(s).line);  // nested steps are the callee's lines
+        else scopes.insert(rec.trace->at(s).scope);
+      }
+      // Every callee a trace steps into has its listing by its id (`list --listing`, check's messages).
+      for (std::uint8_t k : scopes) {
+        INFO("callee " << rec.trace->scope_id(k));
+        const Listing* l = find_listing(rec.trace->scope_id(k));
+        REQUIRE(l);
+        CHECK(l->title == rec.trace->scope_listing(k).title);
+        CHECK(l->lines.size() == rec.trace->scope_listing(k).lines.size());
+      }
     }
     CHECK(ran > 0);
     for (Numeric m : alg.numerics) {  // rounded modes may take other paths

@@ -128,6 +128,9 @@ struct WhittedSpec {
 };
 
 SW_REGISTER(WhittedSpec);
+// Whitted's callees that are no algorithm of their own: `list --listing refract`, and lessons' "refract/split".
+SW_REGISTER_CALLEE(tracer::Refract);
+SW_REGISTER_CALLEE(tracer::SceneHit);
 
 }  // namespace
 
