@@ -174,7 +174,7 @@ static void BM_check_dda_double(benchmark::State& state) {
   std::size_t steps = 0;
   for (auto _ : state) {
     std::istringstream in(text);
-    const sw::CheckReport rep = sw::check_trace(in, false);
+    const sw::CheckReport rep = sw::check_trace(in);
     if (rep.status != 0) state.SkipWithError(rep.message.c_str());
     steps += rep.steps;
   }
