@@ -54,12 +54,12 @@ ClassGrades grade_class(const std::vector<Question>& questions, const std::vecto
         const auto step = static_cast<std::size_t>(parse_integer(a["step"], "step", 0, std::int64_t{1} << 40));
         const auto q = std::find_if(questions.begin(), questions.end(), [&](const Question& x) { return x.step == step; });
         if (q == questions.end()) throw InputError("no question at step " + std::to_string(step) + " (see --list)");
-        const Grade grade_ = grade(*q, a["answer"]);
+        const Grade verdict = grade(*q, a["answer"]);
         const std::size_t s = student_of(a.contains("student") ? a["student"].get<std::string>() : stem);
         if (!seen.insert({s, step}).second)
           throw InputError("step " + std::to_string(step) + " was already answered by " + printable_name(g.students[s]) +
                            " (the first answer counts)");
-        g.answers.push_back({s, &*q, grade_.right, answer_text(*q, normal_answer(*q, a["answer"])), grade_.expected});
+        g.answers.push_back({s, &*q, verdict.right, answer_text(*q, normal_answer(*q, a["answer"])), verdict.expected});
       } catch (const InputError& e) {
         g.skipped.push_back(at + one_line(e.what(), 300));
       }
