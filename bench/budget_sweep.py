@@ -9,10 +9,11 @@ the budget"), then time `run` and `trace` there under /usr/bin/time. The most ex
 bounded at parse) are timed on their example and on the largest input the parser takes ("max"). Stdlib only.
 
     python3 bench/budget_sweep.py [--stepwise PATH] [--only ALG]... [--modes all|best,double,...] [--out FILE.jsonl]
+    python3 bench/budget_sweep.py --commands     # scene render, render --gif and lesson export at their budgets
 
 It prints a Markdown table (docs/cli.md holds the last one) and takes about 20 minutes for the whole catalog.
 """
-import argparse, json, math, os, random, re, signal, subprocess, sys, threading, time
+import argparse, json, math, os, random, re, shutil, signal, subprocess, sys, threading, time
 from fractions import Fraction as F
 from pathlib import Path
 
@@ -289,6 +290,42 @@ def summary(rows):
         print(f"| {alg} | {var} | {est} | {lim} | {worst('run')} | {worst('trace')} |")
 
 
+# ---- commands with budgets of their own: scene render (rays), render --gif and lesson export (frames x pixels) ----
+def render_estimate(scene, side, extra):
+    r = subprocess.run([SW, "scene", "render", scene, "--out", str(WORK / "probe.png"), "--size", f"{side}x{side}", "--max-rays", "0", *extra],
+                       capture_output=True, text=True)
+    m = re.search(r"implies up to (\d+) rays", r.stderr)
+    return int(m[1]) if m else None
+
+
+def sweep_commands(root):
+    """Each example scene at the largest square size the default ray budget (2^26) accepts, as planned and with
+    --all-effects; GIFs and pages at the largest frame count the default pixel budgets accept, at the largest and
+    the smallest frame size. Returns table rows."""
+    rows = []
+    for scene in sorted((root / "scenes").glob("*.json")):
+        for extra in ([], ["--all-effects"]):
+            side, _ = search(lambda s: ((e := render_estimate(str(scene), s, extra)) is not None and e <= 2**26, "budget"), 64, 8192)
+            m = timed([SW, "scene", "render", str(scene), "--out", str(WORK / "render.png"), "--size", f"{side}x{side}", "--quiet", *extra])
+            rows.append(("scene render", f"{scene.stem} {side}x{side}" + (" --all-effects" if extra else ""),
+                         f"{render_estimate(str(scene), side, extra):,} rays", m))
+            print(f"scene render {scene.stem} {side} {extra}: {m}", file=sys.stderr)
+    lesson = root / "lessons" / "04-float-drift.md"  # thousands of steps: the frame budget, not the lesson, binds
+    for cmd, budget, cap in (("render --gif", 2**27, 2000), ("lesson export", 2**26, 600)):
+        for w, h in ((1280, 800), (320, 240)):
+            n = min(cap, budget // (w * h))
+            out = WORK / ("frames.gif" if cmd == "render --gif" else "page")
+            shutil.rmtree(out, ignore_errors=True)
+            args = ["render", "--lesson", str(lesson), "--gif", str(out)] if cmd == "render --gif" else ["lesson", "export", str(lesson), "--html", str(out)]
+            m = timed([SW, *args, "--size", f"{w}x{h}", "--from", "0", "--to", str(n - 1)])
+            rows.append((cmd, f"{lesson.stem}, {n} frames of {w}x{h}", f"{n * w * h:,} pixels", m))
+            print(f"{cmd} {w}x{h} {n}: {m}", file=sys.stderr)
+    print("\n| command | largest input the defaults accept | estimate | s, MB |\n|---|---|---:|---|")
+    for cmd, what, est, m in rows:
+        print(f"| {cmd} | {what} | {est} | {m['s']:.1f}, {(m['kb'] or 0) / 1024:.0f}" + ("" if m["status"] == "ok" else f" ({m['status'][:60]})") + " |")
+    return rows
+
+
 def main():
     global SW, WORK
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -297,9 +334,13 @@ def main():
     ap.add_argument("--modes", default="all", help="all, or a comma list of modes; 'best' is the most exact mode")
     ap.add_argument("--out", default="/tmp/budget/sweep.jsonl")
     ap.add_argument("--work", default="/tmp/budget/inputs", help="where the inputs are written (kept, to reproduce a row)")
+    ap.add_argument("--commands", action="store_true", help="only scene render, render --gif and lesson export (their own budgets)")
     args = ap.parse_args()
     SW, WORK = args.stepwise, Path(args.work)
     WORK.mkdir(parents=True, exist_ok=True)
+    if args.commands:
+        sweep_commands(Path(__file__).resolve().parent.parent)
+        return
     catalog = [json.loads(l) for l in subprocess.run([SW, "list", "--json"], capture_output=True, text=True, check=True).stdout.splitlines() if l.strip()]
     if args.only: catalog = [a for a in catalog if a["id"] in args.only]
     modes = {m for a in catalog for m in a["modes"]} | {"best"} if args.modes == "all" else set(args.modes.split(","))
