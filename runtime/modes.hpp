@@ -83,10 +83,15 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
       (void)first_certain_stage<Spec>(preparer<Spec>(in), 0, [&]<class S>(const auto& prepared, std::size_t k) {
         if constexpr (!std::is_same_v<S, Rational>) {
           // Undecided, or a recorded number not certified to kFilteredTraceRel: the next stage.
+          // The recorder rolls: each step is checked and forgotten, so memory stays flat.
+          auto certify = [](std::span<const S> xs) {
+            for (const S& x : xs)
+              if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
+          };
           Recorder<S> rec;
+          rec.roll_with(certify);
           (void)Spec::template compute<S>(prepared, rec);
-          for (const S& x : rec.numbers())
-            if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
+          certify(rec.numbers());  // the last step's
         }
         stage = k;
         return 0;

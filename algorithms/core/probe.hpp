@@ -157,6 +157,8 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
   // (here and the summarising scratch), GCC stopped inlining push_back, and recording went from
   // 19 to 25 ns per step (bench_probe, same run).
   [[gnu::flatten]] Recorder& step(std::uint32_t line, StepKind kind) {
+    if (roll_) [[unlikely]]
+      roll();
     if (depth_ > max_depth_) [[unlikely]]
       return discarded(line, kind);
     auto nv = static_cast<std::uint32_t>(vars_.size()), ng = static_cast<std::uint32_t>(geos_.size());
@@ -273,6 +275,11 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
     return *this;
   }
 
+  // Rolling: when each step starts, the numbers recorded so far go to `check` and the steps are
+  // forgotten (the scopes entered stay), so a run of any length is checked in constant memory
+  // (filtered mode's certification, modes.hpp). After the run, numbers() holds the last step's.
+  void roll_with(void (*check)(std::span<const Num>)) { roll_ = check; }
+
   // Empties the trace but keeps its memory: re-recording (dragging an endpoint) then costs no
   // allocation or page faults.
   void clear() {
@@ -310,6 +317,12 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
     return *scratch_;
   }
 
+  [[gnu::noinline]] void roll() {
+    roll_(nums_);
+    steps_.clear(), vars_.clear(), geos_.clear(), ints_.clear(), nums_.clear();
+  }
+
+  void (*roll_)(std::span<const Num>) = nullptr;
   std::vector<std::uint8_t> stack_;  // the scopes entered and not left
   int depth_ = 0, max_depth_ = 8;
   std::uint8_t scope_ = 0;  // the innermost recorded scope
