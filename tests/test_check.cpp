@@ -284,5 +284,6 @@ TEST_CASE("check: a divergence names the listing line a student looks at: number
   REQUIRE(id <= l.lines.size());
   CHECK_THAT(r.message, Catch::StartsWith("step " + std::to_string(plot - 1) + " diverges at line " + std::to_string(id) + " (" +
                                           std::string(l.lines[id - 1].name) + ": "));
-  CHECK_THAT(r.message, Catch::Contains(std::string(l.lines[id - 1].text).substr(0, 20)));
+  const std::string text(l.lines[id - 1].text);
+  CHECK_THAT(r.message, Catch::Contains(text.substr(text.find_first_not_of(' '), 12)));  // its indentation collapsed
 }
