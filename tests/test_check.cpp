@@ -209,6 +209,10 @@ TEST_CASE("check: a float trace's numbers are held to 2^-10 (1 + |exact|): withi
   REQUIRE(parse_rational(flat[d]["vars"]["dy"], "") == 0);
   CHECK(check(shifted(flat, d, "dy", 12)).status == 0);
   require_diverges(shifted(flat, d, "dy", 8), d - 1, "variable dy");
+  // Just beyond: 1.5 x 2^-10 off a 0 fails too (a tolerance of 2^-10 (2 + |exact|) would pass it).
+  std::vector<Json> just = flat;
+  just[d]["vars"]["dy"] = Rational(3, 2048).get_str();
+  require_diverges(just, d - 1, "variable dy");
 }
 
 TEST_CASE("check: a step numbered out of sequence fails, content after the result is malformed", "[check]") {
