@@ -80,25 +80,25 @@ std::string item_kind(const Json& item) {
   return "";
 }
 
-// The listing a step's line counts in: the algorithm's own, or a nested callee's ("in"); nullptr
-// for a scope neither the catalog nor the callees know (its lines are then named by number only).
-// Looked up only for a message, not per step.
-const Listing* listing_of(const Json& step, const Listing& own) {
-  const std::string in = step.contains("in") && step["in"].is_string() ? step["in"].get<std::string>() : "";
-  return in.empty() ? &own : find_listing(in);
+// Line `id` of the listing the replay's step counts in: the algorithm's own, or a nested callee's
+// ("in"); nullptr for an id out of range or a scope neither the catalog nor the callees know (its
+// lines are then named by number only). Looked up only for a message, not per step.
+const ListingLine* listing_line(const Json& want, const Listing& own, std::int64_t id) {
+  const std::string in = want.value("in", "");
+  const Listing* l = in.empty() ? &own : find_listing(in);
+  return l && id >= 1 && id <= static_cast<std::int64_t>(l->lines.size()) ? &l->lines[id - 1] : nullptr;
 }
 
 // "line 6 (plot: plot p)" for the replay's step: where a student looks in the listing.
 std::string line_label(const Json& want, const Listing& own) {
-  const Listing* l = listing_of(want, own);
   const auto id = want.at("line").get<std::int64_t>();
   std::string s = "line " + std::to_string(id);
   if (want.contains("in")) s += " of " + want["in"].get<std::string>();
-  if (l && id >= 1 && id <= static_cast<std::int64_t>(l->lines.size())) {
+  if (const ListingLine* l = listing_line(want, own, id)) {
     std::string text;  // the listing's indentation and column padding collapsed to single spaces
-    for (char c : l->lines[id - 1].text)
+    for (char c : l->text)
       if (c != ' ' || (!text.empty() && text.back() != ' ')) text += c;
-    s += " (" + std::string(l->lines[id - 1].name) + ": " + one_line(text, 120) + ")";
+    s += " (" + std::string(l->name) + ": " + one_line(text, 120) + ")";
   }
   return s;
 }
@@ -111,9 +111,8 @@ std::optional<std::string> step_diff(const Json& want, const Json& got, const To
     return "listing: expected a step of " + (want_in.empty() ? std::string("the algorithm itself") : want_in) + ", got one of " + (got_in.empty() ? std::string("the algorithm itself") : got_in);
   // Lines are named only in a message: the callee's listing is looked up then, not per step.
   auto line_name = [&](const Json& l) {
-    const Listing* lst = listing_of(want, listing);
-    const auto id = l.get<std::int64_t>();
-    return l.dump() + (lst && id >= 1 && id <= static_cast<std::int64_t>(lst->lines.size()) ? " (" + std::string(lst->lines[id - 1].name) + ")" : "");
+    const ListingLine* line = listing_line(want, listing, l.get<std::int64_t>());
+    return l.dump() + (line ? " (" + std::string(line->name) + ")" : "");
   };
   if (got.at("line") != want.at("line")) return "line: expected " + line_name(want.at("line")) + ", got " + line_name(got.at("line"));
   if (got.at("kind") != want.at("kind")) return "kind: expected " + want.at("kind").dump() + ", got " + got.at("kind").dump();

@@ -83,15 +83,16 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
       (void)first_certain_stage<Spec>(preparer<Spec>(in), 0, [&]<class S>(const auto& prepared, std::size_t k) {
         if constexpr (!std::is_same_v<S, Rational>) {
           // Undecided, or a recorded number not certified to kFilteredTraceRel: the next stage.
-          // The recorder rolls: each step is checked and forgotten, so memory stays flat.
-          auto certify = [](std::span<const S> xs) {
-            for (const S& x : xs)
-              if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
+          // The recorder checks each step and forgets it, so memory stays flat.
+          struct Certify {
+            static void check(std::span<const S> xs) {
+              for (const S& x : xs)
+                if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
+            }
           };
-          Recorder<S> rec;
-          rec.roll_with(certify);
+          Recorder<S, Certify> rec;
           (void)Spec::template compute<S>(prepared, rec);
-          certify(rec.numbers());  // the last step's
+          Certify::check(rec.numbers());  // the last step's
         }
         stage = k;
         return 0;

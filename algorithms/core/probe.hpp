@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 #include "core/emitters.hpp"
 #include "core/number.hpp"
@@ -143,7 +144,12 @@ class TraceView {
   std::vector<Scope> scopes_;
 };
 
-template <class Num> class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num>, Num> {
+// Check: void, or a type whose static check(std::span<const Num>) is handed each step's numbers
+// as the next step starts; the steps are then forgotten (the scopes entered stay), so a run of
+// any length is checked in constant memory (filtered mode's certification, modes.hpp). A plain
+// recorder pays nothing for it.
+template <class Num, class Check = void>
+class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num, Check>, Num> {
  public:
   static constexpr bool on = true;
 
@@ -157,8 +163,7 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
   // (here and the summarising scratch), GCC stopped inlining push_back, and recording went from
   // 19 to 25 ns per step (bench_probe, same run).
   [[gnu::flatten]] Recorder& step(std::uint32_t line, StepKind kind) {
-    if (roll_) [[unlikely]]
-      roll();
+    if constexpr (!std::is_void_v<Check>) roll();
     if (depth_ > max_depth_) [[unlikely]]
       return discarded(line, kind);
     auto nv = static_cast<std::uint32_t>(vars_.size()), ng = static_cast<std::uint32_t>(geos_.size());
@@ -275,11 +280,6 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
     return *this;
   }
 
-  // Rolling: when each step starts, the numbers recorded so far go to `check` and the steps are
-  // forgotten (the scopes entered stay), so a run of any length is checked in constant memory
-  // (filtered mode's certification, modes.hpp). After the run, numbers() holds the last step's.
-  void roll_with(void (*check)(std::span<const Num>)) { roll_ = check; }
-
   // Empties the trace but keeps its memory: re-recording (dragging an endpoint) then costs no
   // allocation or page faults.
   void clear() {
@@ -317,12 +317,13 @@ template <class Num> class Recorder final : public TraceView, public GeometryEmi
     return *scratch_;
   }
 
-  [[gnu::noinline]] void roll() {
-    roll_(nums_);
+  // A checking recorder: the steps so far are checked and forgotten. After the run, numbers()
+  // holds the last step's.
+  void roll() {
+    Check::check(nums_);
     steps_.clear(), vars_.clear(), geos_.clear(), ints_.clear(), nums_.clear();
   }
 
-  void (*roll_)(std::span<const Num>) = nullptr;
   std::vector<std::uint8_t> stack_;  // the scopes entered and not left
   int depth_ = 0, max_depth_ = 8;
   std::uint8_t scope_ = 0;  // the innermost recorded scope

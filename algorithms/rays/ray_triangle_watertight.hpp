@@ -67,7 +67,6 @@ template <NumberType Num, StepProbe Probe = NoProbe>
     probe.step(L::project, StepKind::init).num("Ax", ax).num("Ay", ay).num("Bx", bx).num("By", by).num("Cx", cx).num("Cy", cy);
   Num u = cx * by - cy * bx, w_v = ax * cy - ay * cx, w = bx * ay - by * ax;
   // U, V, W are the edge functions of the edges opposite v0, v1, v2: their signs colour those edges.
-  // The three edge functions, each beside the edge whose sign it gives.
   auto record_edges = [&](auto line) {
     if constexpr (Probe::on)
       probe.step(line, StepKind::decide)

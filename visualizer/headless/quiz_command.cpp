@@ -1,6 +1,5 @@
 #include "headless/quiz_command.hpp"
 #include "budget.hpp"
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include "lessons/grading.hpp"
@@ -25,15 +24,17 @@ namespace {
 // Per student (their answers, then the score), per question (how many got it right), and the
 // class: as text, JSON lines or CSV.
 void print_grades(const ClassGrades& g, const std::vector<Question>& questions, const QuizOptions& o) {
-  std::vector<int> right(g.students.size()), answered(g.students.size());
-  for (const GradedAnswer& a : g.answers) right[a.student] += a.right, ++answered[a.student];
-  auto question_tally = [&](const Question& q) {
-    int r = 0, n = 0;
-    for (const GradedAnswer& a : g.answers)
-      if (a.question == &q) r += a.right, ++n;
-    return std::pair{r, n};
-  };
-  const int total_right = static_cast<int>(std::count_if(g.answers.begin(), g.answers.end(), [](const GradedAnswer& a) { return a.right; }));
+  // Tallies per student and per question, and each student's answer to each question (grade_class
+  // keeps one at most), counted once.
+  const std::size_t nq = questions.size();
+  std::vector<int> right(g.students.size()), answered(g.students.size()), q_right(nq), q_answered(nq);
+  std::vector<const GradedAnswer*> cell(g.students.size() * nq);
+  int total_right = 0;
+  for (const GradedAnswer& a : g.answers) {
+    const auto q = static_cast<std::size_t>(a.question - questions.data());
+    right[a.student] += a.right, ++answered[a.student], q_right[q] += a.right, ++q_answered[q], total_right += a.right;
+    cell[a.student * nq + q] = &a;
+  }
   auto label = [](const Question& q) { return "step " + std::to_string(q.step) + " " + std::string(quiz_type_name(q.type)); };
   if (o.csv) {
     std::cout << "student,right,answered";
@@ -41,9 +42,9 @@ void print_grades(const ClassGrades& g, const std::vector<Question>& questions, 
     std::cout << '\n';
     for (std::size_t s = 0; s < g.students.size(); ++s) {
       std::cout << csv_field(g.students[s]) << ',' << right[s] << ',' << answered[s];
-      for (const Question& q : questions) {
-        const auto a = std::find_if(g.answers.begin(), g.answers.end(), [&](const GradedAnswer& x) { return x.student == s && x.question == &q; });
-        std::cout << ',' << (a == g.answers.end() ? "" : a->right ? "right" : "wrong");
+      for (std::size_t q = 0; q < nq; ++q) {
+        const GradedAnswer* a = cell[s * nq + q];
+        std::cout << ',' << (!a ? "" : a->right ? "right" : "wrong");
       }
       std::cout << '\n';
     }
@@ -52,16 +53,18 @@ void print_grades(const ClassGrades& g, const std::vector<Question>& questions, 
   for (std::size_t s = 0; s < g.students.size(); ++s) {
     Json list = Json::array();
     if (!o.json) std::cout << printable_name(g.students[s]) << ": " << right[s] << " of " << answered[s] << " answered right\n";
-    for (const GradedAnswer& a : g.answers) {
-      if (a.student != s) continue;
+    for (std::size_t q = 0; q < nq; ++q) {
+      if (!cell[s * nq + q]) continue;
+      const GradedAnswer& a = *cell[s * nq + q];
       if (o.json) list.push_back({{"step", a.question->step}, {"type", quiz_type_name(a.question->type)}, {"right", a.right}, {"answer", a.given}, {"expected", a.expected}});
       else std::cout << "  " << label(*a.question) << ": " << (a.right ? "right: " + a.expected : "wrong: answered " + a.given + ", the exact run gives " + a.expected) << '\n';
     }
     if (o.json)
       std::cout << Json{{"student", g.students[s]}, {"right", right[s]}, {"answered", answered[s]}, {"answers", list}}.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
   }
-  for (const Question& q : questions) {
-    const auto [r, n] = question_tally(q);
+  for (std::size_t k = 0; k < nq; ++k) {
+    const Question& q = questions[k];
+    const int r = q_right[k], n = q_answered[k];
     if (o.json) std::cout << Json{{"question", q.step}, {"type", quiz_type_name(q.type)}, {"prompt", q.prompt}, {"right", r}, {"answered", n}}.dump() << '\n';
     else std::cout << label(q) << ": " << (n ? std::to_string(r) + " of " + std::to_string(n) + " right" : std::string("not answered")) << '\n';
   }

@@ -38,8 +38,7 @@ std::optional<Grade> QuizSession::answer(std::size_t step, const Json& a) {
   const Question* q = pending(step);
   if (!q) return std::nullopt;
   const Grade g = grade(*q, a);
-  Json given = normal_answer(*q, a);
-  answered_.push_back({q->step, g, answer_text(*q, given), std::move(given)});
+  answered_.push_back({q->step, g, normal_answer(*q, a)});
   return g;
 }
 

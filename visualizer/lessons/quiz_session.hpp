@@ -15,8 +15,7 @@ class QuizSession {
   struct Answered {
     std::size_t step;
     Grade grade;
-    std::string answer;  // as text ("(3, 4)", a line name, "negative", "hit")
-    Json given;          // in the truth's form ([3, 4], a line name, -1, true): what a saved answer holds
+    Json given;  // in the truth's form ([3, 4], a line name, -1, true); as text: answer_text(question, given)
   };
 
   bool on() const { return on_; }

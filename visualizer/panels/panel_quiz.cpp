@@ -49,8 +49,9 @@ void draw_quiz(Session& s, const Chrome& c) {
     }
     return;
   }
-  if (done->grade.right) ImGui::TextColored(theme::kGood, "Right: %s.", done->answer.c_str());
-  else ImGui::TextColored(theme::kError, "You said %s; the exact run says %s.", done->answer.c_str(), done->grade.expected.c_str());
+  const std::string said = answer_text(shown, done->given);
+  if (done->grade.right) ImGui::TextColored(theme::kGood, "Right: %s.", said.c_str());
+  else ImGui::TextColored(theme::kError, "You said %s; the exact run says %s.", said.c_str(), done->grade.expected.c_str());
   if (shown.section && !shown.section->text.empty()) draw_markdown(fill_templates(shown.section->text, *s.model(0), step).text, c.fonts);
   ImGui::TextDisabled("Step on (Right arrow) to see it happen.");
 }
