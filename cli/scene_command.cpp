@@ -10,6 +10,7 @@
 #include "png.hpp"
 #include "output.hpp"
 #include "tracer/plan.hpp"
+#include "tracer/render.hpp"
 #include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"
 #include "tracer/scene.hpp"

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include "tracer/render.hpp"
+#include "budget.hpp"
 
 namespace sw::cli {
 

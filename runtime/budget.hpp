@@ -14,6 +14,12 @@ struct Budget {
   std::uint64_t max_output = std::uint64_t{1} << 30;
 };
 
+namespace tracer {
+// The work budget of a render (docs/tracer/renderer.md#the-work-budget), in rays: 2^26, measured
+// so that the largest render the default accepts takes about 10 s on this project's 2-core machine.
+inline constexpr std::uint64_t kDefaultMaxRays = std::uint64_t{1} << 26;
+}  // namespace tracer
+
 // In exact, filtered and reference modes a step costs more the longer the input's exact numbers: a step counts
 // 1 + (longest string) / kDigitsPerWeight against max_steps (measured on dda-grid-walk: 1.3 us a
 // step at 1 character, 5.5 us at 2000, 12 us at 4000; docs/cli.md).

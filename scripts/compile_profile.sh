@@ -23,7 +23,9 @@ TIMEFORMAT='%3U %3S %3R'
 status=$?
 if [ -n "$src" ]; then
   read -r u s r <"$t"
-  awk -v u="$u" -v s="$s" -v r="$r" -v f="${src#"$SW_PROFILE_ROOT"/}" 'BEGIN {printf "%.3f %.3f %s\n", u + s, r, f}' >>"$SW_PROFILE_LOG"
+  f=${src#"$SW_PROFILE_ROOT"/}
+  case $f in */Unity/unity_*_cxx.cxx) f=${f##*/unity_}; f="batch/${f%_cxx.cxx}" ;; esac  # a unity batch (sw_unity_batches)
+  awk -v u="$u" -v s="$s" -v r="$r" -v f="$f" 'BEGIN {printf "%.3f %.3f %s\n", u + s, r, f}' >>"$SW_PROFILE_LOG"
 fi
 rm -f "$t"
 exit $status

@@ -5,13 +5,13 @@
 #include "lessons/lesson.hpp"
 #include "lessons/quiz.hpp"
 #include "lessons/trace_model.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
+using sw::testing::kLessons;
 using namespace sw::vis;
 
 namespace {
-
-const std::filesystem::path kLessons = std::filesystem::path(SW_SOURCE_DIR) / "lessons";
 
 std::shared_ptr<const TraceModel> run_of(const Lesson& l, Numeric n) { return record_model(*l.algorithm, l.input, n); }
 

@@ -8,45 +8,27 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "cli_harness.hpp"
 #include "input.hpp"
 
 namespace fs = std::filesystem;
+using sw::testing::Ran;
+using sw::testing::run_stepwise;
 
 namespace {
-
-struct Out {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-Out run(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("sw-lessons-cli-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const int rc = std::system((std::string("'") + SW_STEPWISE_EXE + "' " + args + " >" + (dir / "o").string() + " 2>" + (dir / "e").string()).c_str());
-  Out o{WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, slurp(dir / "o"), slurp(dir / "e")};
-  fs::remove_all(dir);
-  return o;
-}
 
 const std::string kSource = SW_SOURCE_DIR;
 
 }  // namespace
 
 TEST_CASE("lessons cli: lint exits 0 on the lessons, 1 with file and line on a broken one", "[lesson][cli]") {
-  Out o = run("lesson lint " + kSource + "/lessons/01-dda-line.md " + kSource + "/lessons/05-triangle-crack.md");
+  Ran o = run_stepwise("lesson lint " + kSource + "/lessons/01-dda-line.md " + kSource + "/lessons/05-triangle-crack.md");
   CHECK(o.status == 0);
   CHECK(o.out.empty());
-  o = run("lesson lint " + kSource + "/tests/cases/lessons-broken/shadowed.md");
+  o = run_stepwise("lesson lint " + kSource + "/tests/cases/lessons-broken/shadowed.md");
   CHECK(o.status == 1);
   CHECK(o.out.find("shadowed.md:8: section '## on line plot' is shown at no step") != std::string::npos);
-  o = run("lesson lint /nonexistent/lesson.md");
+  o = run_stepwise("lesson lint /nonexistent/lesson.md");
   CHECK(o.status == 2);
   CHECK(o.err.find("cannot read lesson file") != std::string::npos);
 }
@@ -63,7 +45,7 @@ TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers c
                                            << "{\"step\":2,\"answer\":0,\"student\":\"=cmd()\"}\n";
   std::ofstream(dir / "class" / "notes.txt") << "not answers\n";  // a directory's *.jsonl only
   const std::string lesson = kSource + "/lessons/03-bresenham.md";
-  Out o = run("quiz " + lesson + " --answers " + (dir / "class").string());
+  Ran o = run_stepwise("quiz " + lesson + " --answers " + (dir / "class").string());
   INFO(o.out << o.err);
   CHECK(o.status == 1);  // graded, but lines were skipped
   CHECK(o.out.find("ann: 1 of 1 answered right\n  step 2 sign: right: negative") != std::string::npos);  // the first answer
@@ -76,7 +58,7 @@ TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers c
   CHECK(o.err.find("ann.jsonl:3: answer: malformed JSON") != std::string::npos);
   CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 2);
 
-  o = run("quiz " + lesson + " --answers " + (dir / "class" / "bob.jsonl").string() + " --answers " + (dir / "class" / "x.jsonl").string() + " --csv");
+  o = run_stepwise("quiz " + lesson + " --answers " + (dir / "class" / "bob.jsonl").string() + " --answers " + (dir / "class" / "x.jsonl").string() + " --csv");
   CHECK(o.status == 0);
   std::istringstream csv(o.out);
   std::string header, row;
@@ -87,7 +69,7 @@ TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers c
   CHECK(o.out.find("\"eve\nann: 9 of 9 answered right\",1,1,right,") != std::string::npos);  // quoted per RFC 4180
   CHECK(o.out.find("'=cmd(),0,1,wrong,") != std::string::npos);                          // no formula
 
-  o = run("quiz " + lesson + " --answers " + (dir / "class" / "ann.jsonl").string() + " --json");
+  o = run_stepwise("quiz " + lesson + " --answers " + (dir / "class" / "ann.jsonl").string() + " --json");
   CHECK(o.status == 1);
   std::istringstream lines(o.out);
   std::size_t n = 0;
@@ -96,7 +78,7 @@ TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers c
   CHECK(n == 1 + 17 + 1);  // the student, each question, the class
 
   // An answers path that does not exist: nothing printed, exit 2.
-  o = run("quiz " + lesson + " --answers " + (dir / "none.jsonl").string());
+  o = run_stepwise("quiz " + lesson + " --answers " + (dir / "none.jsonl").string());
   CHECK(o.status == 2);
   CHECK(o.out.empty());
   CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);

@@ -7,13 +7,13 @@
 #include <fstream>
 #include "lessons/grading.hpp"
 #include "lessons/session.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
+using sw::testing::kLessons;
 using namespace sw::vis;
 
 namespace {
-
-const std::filesystem::path kLessons = std::filesystem::path(SW_SOURCE_DIR) / "lessons";
 
 Json example(const Algorithm& alg) { return Json::parse(alg.example); }
 

@@ -9,20 +9,16 @@
 #include <set>
 #include "panels/compare_plot.hpp"
 #include "headless/headless.hpp"
+#include "host_pixels.hpp"
 #include "panels/theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;
+using sw::testing::channel_distance;
 
 namespace {
 
 const std::filesystem::path kLesson04 = std::filesystem::path(SW_SOURCE_DIR) / "lessons" / "04-float-drift.md";
-
-int channel_distance(std::uint32_t a, std::uint32_t b) {
-  int d = 0;
-  for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int((a >> (8 * ch)) & 255) - int((b >> (8 * ch)) & 255)));
-  return d;
-}
 
 // How many of the cell's four edges show `col` within 2 px across the edge at its midpoint.
 int edges_with(const HeadlessHost& host, const std::array<float, 4>& r, std::uint32_t col) {

@@ -4,12 +4,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "headless/headless.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
+using sw::testing::kLessons;
 using namespace sw::vis;
 
 namespace {
-const std::filesystem::path kLessons = std::filesystem::path(SW_SOURCE_DIR) / "lessons";
 }
 
 TEST_CASE("visualizer quiz: stepping stops at each question, a clicked cell answers it", "[visualizer][quiz]") {

@@ -4,21 +4,17 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include "headless/headless.hpp"
+#include "host_pixels.hpp"
 #include "panels/orbit_canvas.hpp"
 #include "panels/theme.hpp"
 
 using namespace sw;
 using namespace sw::vis;
+using sw::testing::channel_distance;
 
 namespace {
 
-constexpr int kW = 1280, kH = 800;
-
-int channel_distance(std::uint32_t a, std::uint32_t b) {
-  int d = 0;
-  for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int((a >> (8 * ch)) & 255) - int((b >> (8 * ch)) & 255)));
-  return d;
-}
+constexpr int kWideW = 1280, kWideH = 800;
 
 // Pixels of colour `want` in a 5x5 square around p.
 int near_colour(const HeadlessHost& host, std::array<float, 2> p, ImU32 want) {
@@ -69,7 +65,7 @@ TEST_CASE("visualizer rays: the ray lessons load into the 3D canvas", "[visualiz
 }
 
 TEST_CASE("visualizer rays: the hit marker is at the hit point on the hit step only", "[visualizer][rays]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kWideW, kWideH);
   App& app = host.app();
   Session& session = app.session();
   // Opens the lesson, checks the marker on the exact run's hit step and its absence one step
@@ -121,7 +117,7 @@ TEST_CASE("visualizer rays: handle_edit3 moves the declared o or o + d", "[visua
 }
 
 TEST_CASE("visualizer rays: dragging o + d re-records the trace and keeps the relative position", "[visualizer][rays]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kWideW, kWideH);
   App& app = host.app();
   Session& session = app.session();
   const Algorithm& alg = find_algorithm("ray-box");

@@ -8,20 +8,16 @@
 #include <set>
 #include <unistd.h>
 #include "headless/headless.hpp"
+#include "host_pixels.hpp"
 #include "panels/pixel_layer.hpp"
 
 using namespace sw;
 using namespace sw::vis;
+using sw::testing::channel_distance;
+using sw::testing::kHostH;
+using sw::testing::kHostW;
 
 namespace {
-
-constexpr int kW = 960, kH = 600;
-
-int channel_distance(std::uint32_t a, std::uint32_t b) {
-  int d = 0;
-  for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int((a >> (8 * ch)) & 255) - int((b >> (8 * ch)) & 255)));
-  return d;
-}
 
 // Samples a 5x5 grid over the inner 60% of a cell: how many samples have colour `want`.
 int samples_matching(const HeadlessHost& host, const std::array<float, 4>& r, std::uint32_t want) {
@@ -63,7 +59,7 @@ void check_canvas(HeadlessHost& host, const TraceModel& m, std::size_t step, int
 }  // namespace
 
 TEST_CASE("visualizer render: plotted pixels and the listing line at known steps", "[visualizer][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   const Algorithm& alg = find_algorithm("dda-line");
@@ -79,7 +75,7 @@ TEST_CASE("visualizer render: plotted pixels and the listing line at known steps
 }
 
 TEST_CASE("visualizer render: the drawn highlight band is on the step's listing line and no other", "[visualizer][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   REQUIRE(session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1.25,2.5],"p1":[12.75,7.25]})", "t"), Numeric::exact));
@@ -107,7 +103,7 @@ TEST_CASE("visualizer render: the drawn highlight band is on the step's listing 
 }
 
 TEST_CASE("visualizer render: the grid walk's corner case and the compare view", "[visualizer][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   REQUIRE(session.open_algorithm(find_algorithm("dda-grid-walk"), parse_json_text(R"({"p0":[0,3.75],"p1":[8,-0.25]})", "t"),
@@ -143,7 +139,7 @@ TEST_CASE("visualizer render: a lesson that fails to load shows its error, never
 }
 
 TEST_CASE("visualizer render: dragging p1 re-runs the trace and keeps the relative position", "[visualizer][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   REQUIRE(session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[1,2],"p1":[13,7]})", "t"), Numeric::exact));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include "cli_harness.hpp"
 #include "headless/headless.hpp"
+#include "host_pixels.hpp"
 #include "panels/image_view.hpp"
 #include "lighting_oracle.hpp"
 #include "panels/outline_layer.hpp"
@@ -16,16 +17,12 @@
 
 using namespace sw;
 using namespace sw::vis;
+using sw::testing::channel_distance;
+using sw::testing::kHostH;
+using sw::testing::kHostW;
 
 namespace {
 
-constexpr int kW = 960, kH = 600;
-
-int channel_distance(std::uint32_t a, std::uint32_t b) {
-  int d = 0;
-  for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::abs(int((a >> (8 * ch)) & 255) - int((b >> (8 * ch)) & 255)));
-  return d;
-}
 int blue_minus_red(std::uint32_t c) { return int((c >> 16) & 255) - int(c & 255); }
 // The median of blue minus red at nine points across a row (some fall on a glyph).
 int row_blueness(const HeadlessHost& host, const std::array<float, 4>& r) {
@@ -79,7 +76,7 @@ TEST_CASE("views table: poly-horner has one row per column and circle-midpoint o
 }
 
 TEST_CASE("views table: the highlighted row follows the step, is drawn highlighted, and a click jumps to its step", "[visualizer][views][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   REQUIRE(session.open_algorithm(find_algorithm("poly-forward-diff"), parse_json_text(R"({"coeffs":[1,-3,0,5],"xs":-40,"xe":40})", "t"), Numeric::f32));
@@ -139,7 +136,7 @@ TEST_CASE("views plot: table_values holds every cell of table_row, carried value
 }
 
 TEST_CASE("views plot: a float difference table's drift against exact, plotted and clickable", "[visualizer][views][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   REQUIRE(session.open_lesson(std::filesystem::path(SW_SOURCE_DIR) / "lessons/08-forward-difference-drift.md"));
@@ -256,7 +253,7 @@ TEST_CASE("views image: a float ray-triangle sweep disagrees with exact exactly 
 }
 
 TEST_CASE("views image: the headless render paints hits, misses and each disagreement in its colour", "[visualizer][views][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   Session& session = app.session();
   REQUIRE(session.open_algorithm(find_algorithm("ray-triangle-mt"), parse_json_text(kEdgeRay, "t"), Numeric::f32));
@@ -319,7 +316,7 @@ TEST_CASE("views image: the headless render paints hits, misses and each disagre
 }
 
 TEST_CASE("views plane2d: the exact curve is drawn over the pixels of implicit-curve", "[visualizer][views][render]") {
-  HeadlessHost host(kW, kH);
+  HeadlessHost host(kHostW, kHostH);
   App& app = host.app();
   REQUIRE(app.session().open_algorithm(find_algorithm("implicit-curve"), parse_json_text(R"({"P":[[1,2,0],[1,0,2],[-100,0,0]],"start":[-10,0],"max_steps":200})", "t"),
                              Numeric::exact));

@@ -8,9 +8,9 @@ namespace sw::tracer {
 
 namespace {
 
-using V = Vec3<double>;
+using Vd = Vec3<double>;  // POV-Ray takes doubles
 
-V d3(const Real3& r) { return {r.d[0], r.d[1], r.d[2]}; }
+Vd d3(const Real3& r) { return {r.d[0], r.d[1], r.d[2]}; }
 // The double nearest q (get_d truncates).
 double nearest(const Rational& q) {
   const double d = q.get_d();
@@ -19,7 +19,7 @@ double nearest(const Rational& q) {
     if (abs(Rational(c) - q) < abs(Rational(best) - q)) best = c;
   return best;
 }
-V dq(const Vec3<Rational>& v) { return {nearest(v.x), nearest(v.y), nearest(v.z)}; }
+Vd dq(const Vec3<Rational>& v) { return {nearest(v.x), nearest(v.y), nearest(v.z)}; }
 
 // Doubles round-trip through %.17g; POV-Ray reads them with strtod.
 std::string num(double x) {
@@ -27,9 +27,9 @@ std::string num(double x) {
   std::snprintf(b, sizeof b, "%.17g", x);
   return b;
 }
-std::string vec(const V& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
-V unit(const V& v) { return (1 / std::sqrt(dot(v, v))) * v; }
-bool grey(const V& c) { return c.x == c.y && c.y == c.z; }
+std::string vec(const Vd& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
+Vd unit(const Vd& v) { return (1 / std::sqrt(dot(v, v))) * v; }
+bool grey(const Vd& c) { return c.x == c.y && c.y == c.z; }
 
 std::string mat_path(const Material& m) { return "scene.materials." + m.name; }
 
@@ -41,9 +41,9 @@ void camera(std::ostream& o, const Camera& c, std::int64_t w, std::int64_t h) {
     throw InputError(
         "scene.camera.projection: " + std::string(c.projection == ray::Projection::fisheye ? "fisheye" : "cylindrical") +
         " has no one-to-one POV-Ray camera (export-pov takes perspective)");
-  const V vpn = d3(c.vpn), vup = d3(c.vup);
-  const V n = unit(vpn), u = unit(cross(vup, n)), v = cross(n, u);
-  V dir = -c.dist.d * n, right, up;
+  const Vd vpn = d3(c.vpn), vup = d3(c.vup);
+  const Vd n = unit(vpn), u = unit(cross(vup, n)), v = cross(n, u);
+  Vd dir = -c.dist.d * n, right, up;
   if (c.has_window) {
     const double u0 = c.window[0].d, u1 = c.window[1].d, v0 = c.window[2].d, v1 = c.window[3].d;
     dir = dir + (0.5 * (u0 + u1)) * u + (0.5 * (v0 + v1)) * v;
@@ -58,19 +58,19 @@ void camera(std::ostream& o, const Camera& c, std::int64_t w, std::int64_t h) {
 
 // A point far beyond every finite object and the eye, towards a directional light: POV-Ray's
 // parallel light needs a position, and casts shadows only from objects nearer than it.
-V far_point(const Scene& s, const V& towards) {
-  V lo = d3(s.camera.eye), hi = lo;
-  auto grow = [&](const V& p) {
+Vd far_point(const Scene& s, const Vd& towards) {
+  Vd lo = d3(s.camera.eye), hi = lo;
+  auto grow = [&](const Vd& p) {
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   };
   for (const Object& ob : s.objects) {
     if (ob.kind == Shape::sphere)
-      grow(d3(ob.a) - V{ob.radius.d, ob.radius.d, ob.radius.d}), grow(d3(ob.a) + V{ob.radius.d, ob.radius.d, ob.radius.d});
+      grow(d3(ob.a) - Vd{ob.radius.d, ob.radius.d, ob.radius.d}), grow(d3(ob.a) + Vd{ob.radius.d, ob.radius.d, ob.radius.d});
     else if (ob.kind == Shape::box) grow(d3(ob.a)), grow(d3(ob.b));
     else if (ob.kind == Shape::triangle) grow(d3(ob.v[0])), grow(d3(ob.v[1])), grow(d3(ob.v[2]));
     else if (ob.kind == Shape::plane) grow(d3(ob.a));
   }
-  const V mid = 0.5 * (lo + hi), span = hi - lo;
+  const Vd mid = 0.5 * (lo + hi), span = hi - lo;
   return mid + (1e3 * std::max(1.0, std::sqrt(dot(span, span)))) * unit(towards);
 }
 
@@ -78,10 +78,10 @@ V far_point(const Scene& s, const V& towards) {
 void light(std::ostream& o, const Scene& s, std::size_t i, bool image, std::vector<std::string>& approx) {
   const lighting::Light<Rational>& li = s.lights[i];
   const std::string at = "scene.lights[" + std::to_string(i) + "]";
-  V colour = image ? dq(li.diffuse) : V{1, 1, 1};
+  Vd colour = image ? dq(li.diffuse) : Vd{1, 1, 1};
   std::string extra;
   if (li.type == lighting::LightType::directional) {
-    const V to = dq(li.where);
+    const Vd to = dq(li.where);
     o << "light_source { " << vec(far_point(s, to)) << " color rgb " << vec(colour) << " parallel point_at "
       << vec(far_point(s, to) - to) << " }\n";
     return;
@@ -117,7 +117,7 @@ std::string checker(const Scene& s, const Material& m, std::size_t obj_index) {
   const Texture& t = s.textures[static_cast<std::size_t>(m.texture)];
   const std::string at = "scene.objects[" + std::to_string(obj_index) + "].material";
   const Object& ob = s.objects[obj_index];
-  const V nrm = d3(ob.b);
+  const Vd nrm = d3(ob.b);
   const int axes = (nrm.x != 0) + (nrm.y != 0) + (nrm.z != 0);
   if (ob.kind != Shape::plane || axes != 1)
     throw InputError(at + ": a checker maps to POV-Ray's solid checker only on an axis-aligned plane, not on a " +
@@ -125,7 +125,7 @@ std::string checker(const Scene& s, const Material& m, std::size_t obj_index) {
   const int k = nrm.x != 0 ? 0 : nrm.y != 0 ? 1 : 2;
   const double sc = t.scale.d;
   const bool odd = static_cast<std::int64_t>(std::floor(ob.a.d[static_cast<std::size_t>(k)] * sc)) & 1;
-  const V c0 = d3(t.colours[odd ? 1 : 0]), c1 = d3(t.colours[odd ? 0 : 1]);
+  const Vd c0 = d3(t.colours[odd ? 1 : 0]), c1 = d3(t.colours[odd ? 0 : 1]);
   return "pigment { checker color rgb " + vec(c0) + ", color rgb " + vec(c1) + " scale " + num(1 / sc) + " }";
 }
 
@@ -146,8 +146,8 @@ std::string material(const Scene& s, std::size_t obj_index, std::vector<std::str
       throw InputError(at + ".texture: " + std::string(kind_name(t.kind)) + " textures have no POV-Ray equivalent");
     pigment = checker(s, m, obj_index);
   } else {
-    const V kd = dq(sh.kd), ka = dq(sh.ka), ke = dq(sh.emission);
-    V a, e;
+    const Vd kd = dq(sh.kd), ka = dq(sh.ka), ke = dq(sh.emission);
+    Vd a, e;
     for (int k = 0; k < 3; ++k) {
       a[k] = kd[k] > 0 ? ka[k] / kd[k] : 0, e[k] = kd[k] > 0 ? ke[k] / kd[k] : 0;
       if (kd[k] == 0 && (ka[k] != 0 || ke[k] != 0))
@@ -157,7 +157,7 @@ std::string material(const Scene& s, std::size_t obj_index, std::vector<std::str
     ambient = "rgb " + vec(a), emission = "rgb " + vec(e);
   }
   std::string spec;
-  const V ks = dq(sh.ks);
+  const Vd ks = dq(sh.ks);
   const double s_mean = (ks.x + ks.y + ks.z) / 3, shin = nearest(sh.params.shininess);
   if (sh.specular == lighting::SpecularModel::phong) spec = " phong " + num(s_mean) + " phong_size " + num(shin);
   else if (sh.specular == lighting::SpecularModel::blinn_phong) {
@@ -184,7 +184,7 @@ void shape(std::ostream& o, const Scene& s, std::size_t k, const std::string& lo
   switch (ob.kind) {
     case Shape::sphere: o << "sphere { " << vec(d3(ob.a)) << ", " << num(ob.radius.d); break;
     case Shape::plane: {
-      const V n = d3(ob.b);  // POV's plane: unit(n) . p = distance
+      const Vd n = d3(ob.b);  // POV's plane: unit(n) . p = distance
       o << "plane { " << vec(n) << ", " << num(dot(n, d3(ob.a)) / std::sqrt(dot(n, n)));
       break;
     }
@@ -194,10 +194,10 @@ void shape(std::ostream& o, const Scene& s, std::size_t k, const std::string& lo
       const MeshFile& mf = s.meshes[static_cast<std::size_t>(ob.mesh)];
       if (!mf.mesh) throw InputError("scene.objects[" + std::to_string(k) + "].file: the mesh was not loaded");
       const spatial::Mesh& m = *mf.mesh;
-      const V tr = d3(ob.translate);
+      const Vd tr = d3(ob.translate);
       o << "mesh2 {\n vertex_vectors { " << m.v.size();
       for (const auto& x : m.v)
-        o << ",\n  " << vec(V{ob.scale.d * x[0], ob.scale.d * x[1], ob.scale.d * x[2]} + tr);  // as trace_scene places them
+        o << ",\n  " << vec(Vd{ob.scale.d * x[0], ob.scale.d * x[1], ob.scale.d * x[2]} + tr);  // as trace_scene places them
       o << " }\n face_indices { " << m.size();
       for (std::size_t i = 0; i < m.size(); ++i) o << ",\n  <" << m.f[i][0] << ", " << m.f[i][1] << ", " << m.f[i][2] << ">";
       o << " }\n";
@@ -240,7 +240,7 @@ PovScene export_pov(const Scene& s, const PovOptions& opt) {
     << " (docs/tracer/povray.md)\n"
     << "// render: povray +W" << w << " +H" << h << " -A +WT1 -D +FN File_Gamma=1.0 +I<this file> +O<png>\n#version 3.7;\n";
   const bool image = opt.mode == PovMode::image;
-  V amb = image ? d3(s.ambient) : V{};
+  Vd amb = image ? d3(s.ambient) : Vd{};
   if (image)
     for (const auto& li : s.lights) amb = amb + dq(li.ambient);
   o << "global_settings { assumed_gamma 1.0 ambient_light rgb " << (opt.mode == PovMode::ids ? "1" : vec(amb))

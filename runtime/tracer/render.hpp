@@ -7,15 +7,12 @@
 #include <functional>
 #include <string>
 #include <vector>
+#include "budget.hpp"  // kDefaultMaxRays
 #include "tracer/plan.hpp"
 #include "tracer/scene.hpp"
 #include "tracer/whitted.hpp"
 
 namespace sw::tracer {
-
-// The work budget of a render (docs/tracer/renderer.md#the-work-budget), in rays: 2^26, measured
-// so that the largest render the default accepts takes about 10 s on this project's 2-core machine.
-inline constexpr std::uint64_t kDefaultMaxRays = std::uint64_t{1} << 26;
 
 struct RenderOptions {
   std::int64_t width = 0, height = 0;  // 0: the scene's resolution

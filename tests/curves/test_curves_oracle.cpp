@@ -9,12 +9,12 @@
 #include "curves_oracle.hpp"
 
 using namespace sw;
-using P = std::vector<Pixel>;
+using Pixels = std::vector<Pixel>;
 using Q = Rational;
 
 namespace {
 
-P moved(P px, std::int64_t dx, std::int64_t dy) {
+Pixels moved(Pixels px, std::int64_t dx, std::int64_t dy) {
   for (Pixel& p : px) p.x += dx, p.y += dy;
   return px;
 }
@@ -24,43 +24,43 @@ P moved(P px, std::int64_t dx, std::int64_t dy) {
 // X(y) is the largest k with (2k - 1)^2 < 4 (r^2 - y^2); rows stop at the first y > X(y).
 TEST_CASE("curves oracle: midpoint circle by hand", "[oracle][curves]") {
   // r = 0: y = 0 gives 4D = 0, so X = 0 (the k == 0 clause) and 0 <= 0: O = {(0, 0)}.
-  CHECK(oracle::circle_midpoint_pixels(0, 0, 0) == P{{0, 0}});
+  CHECK(oracle::circle_midpoint_pixels(0, 0, 0) == Pixels{{0, 0}});
   // r = 1: y = 0: 4D = 4 > 1 = 1^2, 9 > 4, X = 1. y = 1: 4D = 0, X = 0 < 1, stop. O = {(-1, 0)}.
-  CHECK(oracle::circle_midpoint_pixels(0, 0, 1) == P{{-1, 0}, {0, -1}, {0, 1}, {1, 0}});
+  CHECK(oracle::circle_midpoint_pixels(0, 0, 1) == Pixels{{-1, 0}, {0, -1}, {0, 1}, {1, 0}});
   // r = 2: y = 0: 4D = 16, 3^2 = 9 < 16 < 25, X = 2. y = 1: 4D = 12, 9 < 12 < 25, X = 2.
   // y = 2: 4D = 0, X = 0, stop. O = {(-2, 0), (-2, 1)}: images (+-2, 0) (0, +-2) and
   // (+-2, +-1) (+-1, +-2), 12 pixels.
-  CHECK(oracle::circle_midpoint_pixels(0, 0, 2) == P{{-2, -1}, {-2, 0}, {-2, 1}, {-1, -2}, {-1, 2}, {0, -2},
+  CHECK(oracle::circle_midpoint_pixels(0, 0, 2) == Pixels{{-2, -1}, {-2, 0}, {-2, 1}, {-1, -2}, {-1, 2}, {0, -2},
                                                      {0, 2}, {1, -2}, {1, 2}, {2, -1}, {2, 0}, {2, 1}});
   // r = 3: y = 0: 4D = 36, 25 < 36 < 49, X = 3. y = 1: 4D = 32, 25 < 32, X = 3.
   // y = 2: 4D = 20, 9 < 20 < 25, X = 2 and 2 <= 2. y = 3: 4D = 0, stop.
   // O = {(-3, 0), (-3, 1), (-2, 2)}: 4 + 8 + 4 = 16 pixels.
-  CHECK(oracle::circle_midpoint_pixels(0, 0, 3) == P{{-3, -1}, {-3, 0}, {-3, 1}, {-2, -2}, {-2, 2}, {-1, -3},
+  CHECK(oracle::circle_midpoint_pixels(0, 0, 3) == Pixels{{-3, -1}, {-3, 0}, {-3, 1}, {-2, -2}, {-2, 2}, {-1, -3},
                                                      {-1, 3}, {0, -3}, {0, 3}, {1, -3}, {1, 3}, {2, -2},
                                                      {2, 2}, {3, -1}, {3, 0}, {3, 1}});
   // r = 5: 4D = 100, 96, 84 for y = 0, 1, 2: all in (81, 121), X = 5. y = 3: 4D = 64 in (49, 81),
   // X = 4. y = 4: 4D = 36 in (25, 49), X = 3 < 4, stop. O = {(-5, 0..2), (-4, 3)}: 4 + 8 + 8 + 8.
   CHECK(oracle::circle_midpoint_pixels(0, 0, 5) ==
-        P{{-5, -2}, {-5, -1}, {-5, 0}, {-5, 1}, {-5, 2}, {-4, -3}, {-4, 3}, {-3, -4}, {-3, 4}, {-2, -5},
+        Pixels{{-5, -2}, {-5, -1}, {-5, 0}, {-5, 1}, {-5, 2}, {-4, -3}, {-4, 3}, {-3, -4}, {-3, 4}, {-2, -5},
           {-2, 5}, {-1, -5}, {-1, 5}, {0, -5},  {0, 5},  {1, -5},  {1, 5},  {2, -5},  {2, 5},  {3, -4},
           {3, 4},  {4, -3},  {4, 3},  {5, -2},  {5, -1}, {5, 0},   {5, 1},  {5, 2}});
   // Moving the centre to (10, -4) moves every pixel of r = 1 by it.
-  CHECK(oracle::circle_midpoint_pixels(10, -4, 1) == P{{9, -4}, {10, -5}, {10, -3}, {11, -4}});
+  CHECK(oracle::circle_midpoint_pixels(10, -4, 1) == Pixels{{9, -4}, {10, -5}, {10, -3}, {11, -4}});
 }
 
 // I(y) is the largest k with k^2 <= r^2 - y^2.
 TEST_CASE("curves oracle: interior circle by hand", "[oracle][curves]") {
   // r = 0: D = 0, I = 0, O = {(0, 0)}.
-  CHECK(oracle::circle_interior_pixels(0, 0, 0) == P{{0, 0}});
+  CHECK(oracle::circle_interior_pixels(0, 0, 0) == Pixels{{0, 0}});
   // r = 1: y = 0: D = 1, I = 1. y = 1: D = 0, I = 0 < 1, stop.
-  CHECK(oracle::circle_interior_pixels(0, 0, 1) == P{{-1, 0}, {0, -1}, {0, 1}, {1, 0}});
+  CHECK(oracle::circle_interior_pixels(0, 0, 1) == Pixels{{-1, 0}, {0, -1}, {0, 1}, {1, 0}});
   // r = 2: y = 0: D = 4, I = 2. y = 1: D = 3, I = 1 and 1 <= 1. y = 2: D = 0, stop.
   // O = {(-2, 0), (-1, 1)}: the diagonal (+-1, +-1) where the midpoint circle has (+-2, +-1).
-  const P r2{{-2, 0}, {-1, -1}, {-1, 1}, {0, -2}, {0, 2}, {1, -1}, {1, 1}, {2, 0}};
+  const Pixels r2{{-2, 0}, {-1, -1}, {-1, 1}, {0, -2}, {0, 2}, {1, -1}, {1, 1}, {2, 0}};
   CHECK(oracle::circle_interior_pixels(0, 0, 2) == r2);
   // r = 3: y = 0: D = 9, I = 3. y = 1: D = 8, I = 2 (4 <= 8 < 9). y = 2: D = 5, I = 2, 2 <= 2.
   // y = 3: D = 0, stop. O = {(-3, 0), (-2, 1), (-2, 2)}: 4 + 8 + 4 = 16 pixels.
-  CHECK(oracle::circle_interior_pixels(0, 0, 3) == P{{-3, 0}, {-2, -2}, {-2, -1}, {-2, 1}, {-2, 2}, {-1, -2},
+  CHECK(oracle::circle_interior_pixels(0, 0, 3) == Pixels{{-3, 0}, {-2, -2}, {-2, -1}, {-2, 1}, {-2, 2}, {-1, -2},
                                                      {-1, 2}, {0, -3}, {0, 3}, {1, -2}, {1, 2}, {2, -2},
                                                      {2, -1}, {2, 1}, {2, 2}, {3, 0}});
   // A centre off the origin (and negative) only translates the set.
@@ -92,7 +92,7 @@ namespace {
 
 // The first property that fails, as text ("" if none). Checked pixel by pixel without REQUIRE, so
 // that the ~10^6 checks stay fast.
-std::string first_failure(const P& px, std::int64_t cx, std::int64_t cy, std::int64_t r, bool midpoint) {
+std::string first_failure(const Pixels& px, std::int64_t cx, std::int64_t cy, std::int64_t r, bool midpoint) {
   if (px.empty()) return "empty";
   if (std::adjacent_find(px.begin(), px.end(), [](Pixel a, Pixel b) { return !(a < b); }) != px.end())
     return "not strictly sorted (unsorted or duplicated)";
@@ -152,26 +152,26 @@ TEST_CASE("curves oracle: cubic pixels by hand", "[oracle][curves]") {
     return oracle::poly_pixels({a, b, c, d}, xs, xe);
   };
   // y = x^2 - 1 on [-2, 3): 4 - 1 = 3, 1 - 1 = 0, -1, 0, 3.
-  CHECK(poly(0, 1, 0, -1, -2, 3) == P{{-2, 3}, {-1, 0}, {0, -1}, {1, 0}, {2, 3}});
+  CHECK(poly(0, 1, 0, -1, -2, 3) == Pixels{{-2, 3}, {-1, 0}, {0, -1}, {1, 0}, {2, 3}});
   // y = x / 2 on [-3, 4): -3/2 -1 -1/2 0 1/2 1 3/2, plus 1/2 and floored: -1 -1 0 0 1 1 2
   // (halves round up, also below zero: -1/2 -> 0, -3/2 -> -1).
-  CHECK(poly(0, 0, Q(1, 2), 0, -3, 4) == P{{-3, -1}, {-2, -1}, {-1, 0}, {0, 0}, {1, 1}, {2, 1}, {3, 2}});
+  CHECK(poly(0, 0, Q(1, 2), 0, -3, 4) == Pixels{{-3, -1}, {-2, -1}, {-1, 0}, {0, 0}, {1, 1}, {2, 1}, {3, 2}});
   // Constants k + 1/2: 7/2 -> 4, -1/2 -> 0, -3/2 -> -1.
-  CHECK(poly(0, 0, 0, Q(7, 2), 5, 6) == P{{5, 4}});
-  CHECK(poly(0, 0, 0, Q(-1, 2), 0, 1) == P{{0, 0}});
-  CHECK(poly(0, 0, 0, Q(-3, 2), 0, 1) == P{{0, -1}});
+  CHECK(poly(0, 0, 0, Q(7, 2), 5, 6) == Pixels{{5, 4}});
+  CHECK(poly(0, 0, 0, Q(-1, 2), 0, 1) == Pixels{{0, 0}});
+  CHECK(poly(0, 0, 0, Q(-3, 2), 0, 1) == Pixels{{0, -1}});
   // Negative coefficients, y = -x^3 + 2x on [-2, 3): 8 - 4 = 4, 1 - 2 = -1, 0, -1 + 2 = 1, -8 + 4 = -4.
-  CHECK(poly(-1, 0, 2, 0, -2, 3) == P{{-2, 4}, {-1, -1}, {0, 0}, {1, 1}, {2, -4}});
+  CHECK(poly(-1, 0, 2, 0, -2, 3) == Pixels{{-2, 4}, {-1, -1}, {0, 0}, {1, 1}, {2, -4}});
   // Fractions, y = x^3 / 3 + 1/6 on [-2, 3): -8/3 + 1/6 = -5/2 -> -2 (a tie), -1/3 + 1/6 = -1/6 -> 0,
   // 1/6 -> 0, 1/3 + 1/6 = 1/2 -> 1 (a tie), 8/3 + 1/6 = 17/6 -> 3.
-  CHECK(poly(Q("1/3"), 0, 0, Q("1/6"), -2, 3) == P{{-2, -2}, {-1, 0}, {0, 0}, {1, 1}, {2, 3}});
+  CHECK(poly(Q("1/3"), 0, 0, Q("1/6"), -2, 3) == Pixels{{-2, -2}, {-1, 0}, {0, 0}, {1, 1}, {2, 3}});
   // y = x^2 / 4 - x / 5 on [-1, 2): 1/4 + 1/5 = 9/20 -> 0, 0, 1/4 - 1/5 = 1/20 -> 0.
-  CHECK(poly(0, Q("1/4"), Q("-1/5"), 0, -1, 2) == P{{-1, 0}, {0, 0}, {1, 0}});
+  CHECK(poly(0, Q("1/4"), Q("-1/5"), 0, -1, 2) == Pixels{{-1, 0}, {0, 0}, {1, 0}});
   // Exactness: 1/2 - 10^-30 rounds down, 1/2 rounds up (doubles cannot tell these apart).
-  CHECK(poly(0, 0, 0, Q("1/2") - Q("1/1000000000000000000000000000000"), 0, 1) == P{{0, 0}});
-  CHECK(poly(0, 0, 0, Q("1/2"), 0, 1) == P{{0, 1}});
+  CHECK(poly(0, 0, 0, Q("1/2") - Q("1/1000000000000000000000000000000"), 0, 1) == Pixels{{0, 0}});
+  CHECK(poly(0, 0, 0, Q("1/2"), 0, 1) == Pixels{{0, 1}});
   // Large x: y = x^3 at 2^20 is 2^60, still an int64; at 2^22 it is 2^66, which is not.
-  CHECK(poly(1, 0, 0, 0, 1 << 20, (1 << 20) + 1) == P{{1 << 20, std::int64_t(1) << 60}});
+  CHECK(poly(1, 0, 0, 0, 1 << 20, (1 << 20) + 1) == Pixels{{1 << 20, std::int64_t(1) << 60}});
   CHECK_THROWS_AS(poly(1, 0, 0, 0, 1 << 22, (1 << 22) + 1), std::overflow_error);
   // Empty ranges.
   CHECK(poly(1, 2, 3, 4, 3, 3).empty());

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 #include "catalog.hpp"
+#include "core/number.hpp"
 #include "fill_clip_oracle.hpp"
 #include "step_values.hpp"
 
@@ -14,6 +15,9 @@ namespace sw::testing::clip {
 
 using oracle::Polygon2;
 using Q = Rational;
+
+// Whether an interval result encloses the exact value.
+inline bool within(const Interval& v, const Q& exact) { return num::to_rational(v.lo()) <= exact && exact <= num::to_rational(v.hi()); }
 
 struct Case {
   std::string name;

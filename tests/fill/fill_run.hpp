@@ -1,8 +1,11 @@
 // Running the fills directly in one number type, for the fill tests.
 #pragma once
 #include <array>
+#include <map>
+#include <optional>
 #include <random>
 #include <vector>
+#include "core/number.hpp"
 #include "fill/scanline_polygon.hpp"
 #include "fill/triangle_dda.hpp"
 #include "fill/triangle_edge.hpp"
@@ -12,6 +15,23 @@ namespace sw::testing {
 
 using Tri = std::array<Vec2<Rational>, 3>;
 using Rings = std::vector<std::vector<Vec2<Rational>>>;
+
+// Filtered mode: the Interval run, or nothing when a comparison was too close to call (the chain
+// then runs exact).
+template <class F> auto filtered(F f, std::size_t& uncertain) -> std::optional<decltype(f())> {
+  try {
+    return f();
+  } catch (const Uncertain&) {
+    ++uncertain;
+    return std::nullopt;
+  }
+}
+
+// How many times each sample is covered by the pieces.
+using Cover = std::map<std::pair<std::int64_t, std::int64_t>, int>;
+inline void add_cover(Cover& c, const std::vector<Pixel>& px) {
+  for (Pixel p : px) ++c[{p.x, p.y}];
+}
 
 template <class Num, bool Offset = true, class Probe = NoProbe>
 fill::FillResult<Num> run_dda(const Tri& t, const std::vector<std::array<Rational, 3>>& attrs = {}, Probe probe = {}) {

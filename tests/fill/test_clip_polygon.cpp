@@ -23,8 +23,6 @@ template <class Num> std::vector<Vec2<Num>> run(const Polygon2& subject, const P
   return fill::sutherland_hodgman<Num>(s, c, none);
 }
 
-bool within(const Interval& v, const Q& exact) { return num::to_rational(v.lo()) <= exact && exact <= num::to_rational(v.hi()); }
-
 bool on_segment(const Vec2<Q>& a, const Vec2<Q>& b, const Vec2<Q>& p) {
   return sgn(cross(a, b, p)) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }

@@ -27,8 +27,6 @@ Ends as_set(Ends e) {
   return e;
 }
 
-bool within(const Interval& v, const Q& exact) { return num::to_rational(v.lo()) <= exact && exact <= num::to_rational(v.hi()); }
-
 // The outcode, written from the semantics: which boundary lines p lies strictly beyond.
 int code(const Vec2<Q>& p, const Vec2<Q>& lo, const Vec2<Q>& hi) {
   int c = 0;
@@ -44,7 +42,7 @@ struct SegmentCase {
   Vec2<Q> p0, p1, lo, hi;
 };
 
-SegmentCase parse_case(const Case& c) {
+SegmentCase parse_segment_case(const Case& c) {
   const Json& s = c.input.at("segment");
   const Json& w = c.input.at("window");
   return {c.name, point_of(s[0]), point_of(s[1]), point_of(w.at("min")), point_of(w.at("max"))};
@@ -52,7 +50,7 @@ SegmentCase parse_case(const Case& c) {
 
 // Random cases: half-integer ends and windows on a short range (corners, edges, points and
 // zero-width windows come up often), or double-exact values with 20 fraction bits.
-SegmentCase random_case(SmallRng& g, bool small) {
+SegmentCase random_segment_case(SmallRng& g, bool small) {
   if (small) {
     const Vec2<Q> lo = g.point(0, 3);
     const Vec2<Q> hi{lo.x + Q(g.pick(0, 5)), lo.y + Q(g.pick(0, 4))};
@@ -69,7 +67,7 @@ TEST_CASE("fill clip: cohen-sutherland in exact and filtered equals the oracle o
   SmallRng g{std::mt19937_64(41)};
   std::size_t uncertain = 0, accepted = 0, degenerate = 0;
   for (int i = 0; i < 10000; ++i) {
-    const SegmentCase c = random_case(g, i % 2 == 0);
+    const SegmentCase c = random_segment_case(g, i % 2 == 0);
     INFO("case " << i << ": " << c.p0.x << "," << c.p0.y << " -> " << c.p1.x << "," << c.p1.y << " window " << c.lo.x << "," << c.lo.y << " "
                   << c.hi.x << "," << c.hi.y);
     const Ends want = oracle::clip_segment(c.p0, c.p1, c.lo, c.hi);
@@ -147,9 +145,9 @@ TEST_CASE("fill clip: every value a cohen-sutherland step records matches its cl
   using L = fill::CohenSutherland;
   using K = StepKind;
   std::vector<SegmentCase> cases;
-  for (const Case& c : corpus_cases("cohen-sutherland")) cases.push_back(parse_case(c));
+  for (const Case& c : corpus_cases("cohen-sutherland")) cases.push_back(parse_segment_case(c));
   SmallRng g{std::mt19937_64(47)};
-  for (int i = 0; i < 400; ++i) cases.push_back(random_case(g, true));
+  for (int i = 0; i < 400; ++i) cases.push_back(random_segment_case(g, true));
   std::size_t cuts_seen = 0;
   for (const SegmentCase& c : cases) {
     INFO(c.name << ": " << c.p0.x << "," << c.p0.y << " -> " << c.p1.x << "," << c.p1.y);

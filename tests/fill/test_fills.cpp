@@ -23,22 +23,6 @@ Tri random_triangle(std::mt19937_64& rng, long half, long den) {
   return t;
 }
 
-// Filtered mode: the Interval run, or nothing when a comparison was too close to call (the chain
-// then runs exact).
-template <class F> auto filtered(F f, std::size_t& uncertain) -> std::optional<decltype(f())> {
-  try {
-    return f();
-  } catch (const Uncertain&) {
-    ++uncertain;
-    return std::nullopt;
-  }
-}
-
-// How many times each sample is covered by the pieces.
-using Cover = std::map<std::pair<std::int64_t, std::int64_t>, int>;
-void add(Cover& c, const std::vector<Pixel>& px) {
-  for (Pixel p : px) ++c[{p.x, p.y}];
-}
 
 }  // namespace
 
@@ -152,14 +136,14 @@ TEST_CASE("fill: the triangles of meshes and fans cover each sample of the union
     Cover dda, edge, scan, loose;
     for (int k = 0; k < 64; ++k) {
       const Tri t{c, rim[k], rim[(k + 1) % 64]};
-      add(dda, run_dda<Rational>(t).pixels);
-      add(edge, run_edge<Rational>(t));
-      add(scan, run_scanline<Rational>({{t[0], t[1], t[2]}}, fill::WindingRule::nonzero));
-      add(loose, run_dda<double, false>(t).pixels);
+      add_cover(dda, run_dda<Rational>(t).pixels);
+      add_cover(edge, run_edge<Rational>(t));
+      add_cover(scan, run_scanline<Rational>({{t[0], t[1], t[2]}}, fill::WindingRule::nonzero));
+      add_cover(loose, run_dda<double, false>(t).pixels);
     }
     const auto want = oracle::polygon_samples({rim}, oracle::FillRule::nonzero);
     Cover once;
-    add(once, want);
+    add_cover(once, want);
     CHECK(dda == once);
     CHECK(edge == once);
     CHECK(scan == once);
@@ -183,7 +167,7 @@ TEST_CASE("fill: a square grid cut into triangles both ways tiles exactly", "[fi
       const bool flip = (a + b) % 2;
       const Tri t0{v[a][b], v[a + 1][b], flip ? v[a + 1][b + 1] : v[a][b + 1]};
       const Tri t1{flip ? v[a][b] : v[a + 1][b], v[a + 1][b + 1], v[a][b + 1]};
-      for (const Tri& t : {t0, t1}) add(dda, run_dda<Rational>(t).pixels), add(edge, run_edge<Rational>(t));
+      for (const Tri& t : {t0, t1}) add_cover(dda, run_dda<Rational>(t).pixels), add_cover(edge, run_edge<Rational>(t));
     }
   Cover square;  // [0, 15) x [0, 15): the boundary's left and bottom edges in, right and top out
   for (std::int64_t j = 0; j < 15; ++j)

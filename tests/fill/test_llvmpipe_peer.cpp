@@ -6,7 +6,15 @@
 #include "../../bench/llvmpipe_peer.hpp"
 
 using namespace sw;
-using namespace sw::peer;
+using sw::peer::CatalogComparison;
+using sw::peer::Comparison;
+using sw::peer::compare;
+using sw::peer::compare_catalog;
+using sw::peer::large_cases;
+using sw::peer::Layout;
+using sw::peer::Llvmpipe;
+using sw::peer::off_grid_cases;
+using sw::peer::on_grid_cases;
 
 namespace {
 

@@ -28,15 +28,6 @@ fill::Screen random_screen(std::mt19937_64& rng, long lo, long hi) {
   return {i0, j0, i0 + u(lo, hi), j0 + u(lo, hi)};
 }
 
-template <class F> auto filtered(F f, std::size_t& uncertain) -> std::optional<decltype(f())> {
-  try {
-    return f();
-  } catch (const Uncertain&) {
-    ++uncertain;
-    return std::nullopt;
-  }
-}
-
 enum Kind { partly, inside, outside, huge, on_edges, kinds };
 
 // One random case of the given kind; den: vertices on the 1/den grid.
@@ -179,13 +170,6 @@ TEST_CASE("raster-clip: rational vertices (thirds) and vertices near the bound 2
   }
 }
 
-namespace {
-using Cover = std::map<std::pair<std::int64_t, std::int64_t>, int>;
-void add(Cover& c, const std::vector<Pixel>& px) {
-  for (Pixel p : px) ++c[{p.x, p.y}];
-}
-}  // namespace
-
 TEST_CASE("raster-clip: adjacent screens tile: split at a column and a row, each sample is drawn once", "[fill][raster-clip][tiling]") {
   std::mt19937_64 rng(4);
   for (int n = 0; n < 400; ++n) {
@@ -194,9 +178,9 @@ TEST_CASE("raster-clip: adjacent screens tile: split at a column and a row, each
     const std::int64_t im = std::uniform_int_distribution<std::int64_t>(s.i0, s.i1)(rng), jm = std::uniform_int_distribution<std::int64_t>(s.j0, s.j1)(rng);
     const auto whole = run_clip<Rational>(t, s).pixels;
     Cover got, once;
-    add(once, whole);
+    add_cover(once, whole);
     for (const fill::Screen& q : {fill::Screen{s.i0, s.j0, im, jm}, {im, s.j0, s.i1, jm}, {s.i0, jm, im, s.j1}, {im, jm, s.i1, s.j1}})
-      if (q.i0 < q.i1 && q.j0 < q.j1) add(got, run_clip<Rational>(t, q).pixels);
+      if (q.i0 < q.i1 && q.j0 < q.j1) add_cover(got, run_clip<Rational>(t, q).pixels);
     REQUIRE(got == once);
   }
   // A fan of 32 triangles around a centre on a sample, its rim far larger than the screens, drawn
@@ -211,7 +195,7 @@ TEST_CASE("raster-clip: adjacent screens tile: split at a column and a row, each
     Cover got;
     for (int k = 0; k < 32; ++k)
       for (std::int64_t a = 0; a < 3; ++a)
-        for (std::int64_t b = 0; b < 3; ++b) add(got, run_clip<Rational>({c, rim[k], rim[(k + 1) % 32]}, {-9 + 6 * a, -9 + 6 * b, -3 + 6 * a, -3 + 6 * b}).pixels);
+        for (std::int64_t b = 0; b < 3; ++b) add_cover(got, run_clip<Rational>({c, rim[k], rim[(k + 1) % 32]}, {-9 + 6 * a, -9 + 6 * b, -3 + 6 * a, -3 + 6 * b}).pixels);
     Cover screen;  // the rim encloses the whole 18 x 18 screen
     for (std::int64_t j = -9; j < 9; ++j)
       for (std::int64_t i = -9; i < 9; ++i) screen[{i, j}] = 1;

@@ -9,6 +9,18 @@
 
 namespace sw::testing {
 
+// Exact floor and ceiling, written here so that the expectations share no helper with the
+// algorithms (num::floor_int).
+inline Rational floor_q(const Rational& v) {
+  mpz_class f;
+  mpz_fdiv_q(f.get_mpz_t(), v.get_num_mpz_t(), v.get_den_mpz_t());
+  return Rational(f);
+}
+inline Rational ceil_q(const Rational& v) { return -floor_q(-v); }
+
+// The axis a line steps along: x when |dx| > |dy|, else y (a 45-degree line steps in y).
+inline int major_axis(const Vec2<Rational>& d) { return abs(d.x) > abs(d.y) ? 0 : 1; }
+
 struct Segment {
   Vec2<Rational> p0, p1;
   std::string name;

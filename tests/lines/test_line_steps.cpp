@@ -27,7 +27,10 @@
 #include "lines/dda_line.hpp"
 
 using namespace sw;
+using sw::testing::ceil_q;
+using sw::testing::floor_q;
 using sw::testing::GeoItem;
+using sw::testing::major_axis;
 using sw::testing::ratio;
 using sw::testing::Segment;
 using sw::testing::StepGeometry;
@@ -36,14 +39,7 @@ using Q = Rational;
 
 namespace {
 
-// Exact floor and rounding, written here so that the expectations share no helper with the
-// algorithms (num::floor_int).
-Q floor_q(const Q& v) {
-  mpz_class f;
-  mpz_fdiv_q(f.get_mpz_t(), v.get_num_mpz_t(), v.get_den_mpz_t());
-  return Q(f);
-}
-Q ceil_q(const Q& v) { return -floor_q(-v); }
+// Rounding written here so that the expectations share no helper with the algorithms.
 Q round_q(const Q& v) { return floor_q(v + ratio(1, 2)); }  // a tie goes up
 std::int64_t to_int(const Q& v) { return v.get_num().get_si(); }
 bool is_half_integer(const Q& v) { return Q(v - ratio(1, 2)).get_den() == 1; }
@@ -102,7 +98,6 @@ Pixel holding(const Vec2<Q>& p) { return pixel_of(round_q(p.x), round_q(p.y)); }
 // (major, minor) coordinates back to (x, y).
 Vec2<Q> from_axes(int a, const Q& major, const Q& minor) { return a == 0 ? Vec2<Q>{major, minor} : Vec2<Q>{minor, major}; }
 // The major axis: x if |dx| > |dy|, else y (a tie steps rows).
-int major_axis(const Vec2<Q>& d) { return abs(d.x) > abs(d.y) ? 0 : 1; }
 
 // dda-line. With from/to the endpoints ordered upward along the major axis a, D = to - from and
 // dp = D / D_a, the sample on column c is q(c) = from + (c - from_a) dp; the columns are the integers

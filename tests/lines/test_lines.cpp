@@ -8,6 +8,8 @@
 #include "lines/dda_line.hpp"
 
 using namespace sw;
+using sw::testing::ceil_q;
+using sw::testing::major_axis;
 using sw::testing::Segment;
 using Q = Rational;
 
@@ -88,10 +90,6 @@ struct Replay {
   }
 };
 #define EXPECT(cond) replay.expect(static_cast<bool>(cond), i, #cond)
-
-int major_axis(const Vec2<Q>& d) { return abs(d.x) > abs(d.y) ? 0 : 1; }
-
-Q ceil_q(const Q& v) { return Q(num::ceil_int(v)); }
 
 }  // namespace
 

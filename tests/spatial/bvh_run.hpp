@@ -8,6 +8,7 @@
 #include "catalog.hpp"
 #include "spatial/bvh_build.hpp"
 #include "spatial/bvh_cases.hpp"
+#include "spatial/mesh_json.hpp"
 #include "spatial_oracle.hpp"
 
 namespace sw::testing::bvh {
@@ -15,15 +16,8 @@ namespace sw::testing::bvh {
 using spatial::Mesh;
 using spatial::RayIn;
 
-inline Json mesh_json(const Mesh& m) {
-  Json t = Json::array();
-  for (const auto& f : m.f) {
-    Json tri = Json::array();
-    for (int c = 0; c < 3; ++c) tri.push_back({m.v[f[c]][0], m.v[f[c]][1], m.v[f[c]][2]});
-    t.push_back(tri);
-  }
-  return {{"triangles", t}};
-}
+using sw::testing::mesh_json;
+
 inline Json query_json(const Mesh& m, const RayIn& r, bool any = false, double t_max = 0) {
   Json j = mesh_json(m);
   j["ray"] = {{"o", {r.o[0], r.o[1], r.o[2]}}, {"d", {r.d[0], r.d[1], r.d[2]}}};

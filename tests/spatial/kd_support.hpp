@@ -12,6 +12,7 @@
 #include "spatial/kd_common.hpp"
 #include "spatial/kd_nearest.hpp"
 #include "spatial/kd_traverse.hpp"
+#include "spatial/mesh_json.hpp"
 #include "spatial_oracle.hpp"
 
 namespace sw::testing::kd {
@@ -45,11 +46,7 @@ inline Mesh grid_mesh(int n, double s = 1, double z0 = 0) {
   return m;
 }
 
-inline Json mesh_json(const Mesh& m) {
-  Json t = Json::array();
-  for (const auto& f : m.f) t.push_back({{m.v[f[0]][0], m.v[f[0]][1], m.v[f[0]][2]}, {m.v[f[1]][0], m.v[f[1]][1], m.v[f[1]][2]}, {m.v[f[2]][0], m.v[f[2]][1], m.v[f[2]][2]}});
-  return {{"triangles", t}};
-}
+using sw::testing::mesh_json;
 
 inline Json ray_json(const RayIn& r) { return {{"o", {r.o[0], r.o[1], r.o[2]}}, {"d", {r.d[0], r.d[1], r.d[2]}}}; }
 

@@ -12,11 +12,11 @@ using namespace sw::testing::bsp;
 
 namespace {
 
-const std::array<Numeric, 4> kModes{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+const std::array<Numeric, 4> kBspModes{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
 
 bool robust(Numeric n) { return n == Numeric::filtered || n == Numeric::exact; }
 
-struct Case {
+struct SceneCase {
   std::string name;
   std::vector<Seg> segs;
   std::array<double, 2> eye;
@@ -34,10 +34,10 @@ struct Failures {
 
 // Runs the painter on every mode: robust modes must pass the oracle and agree with each other
 // exactly; rounded modes' failures are counted per mode.
-void run_case(const Case& c, std::map<Numeric, Failures>& failures) {
+void run_case(const SceneCase& c, std::map<Numeric, Failures>& failures) {
   INFO("case " << c.name << ": " << input_json(c.segs, c.eye).dump());
   Json exact;
-  for (Numeric n : kModes) {
+  for (Numeric n : kBspModes) {
     INFO(numeric_name(n));
     Json r;
     const Verdict v = judge("bsp-painter", c.segs, c.eye, n, &r);
@@ -86,7 +86,7 @@ TEST_CASE("bsp: random crossing and non-crossing sets: robust modes cover exactl
 }
 
 TEST_CASE("bsp: degenerate sets: collinear, overlapping, shared endpoints, T-junctions, the eye on lines, huge and tiny coordinates", "[spatial][spatial-bsp]") {
-  std::vector<Case> cases;
+  std::vector<SceneCase> cases;
   const std::vector<Seg> example{{0, 0, 8, 8}, {8, 0, 0, 8}, {-2, 3, 10, 3}, {2, 10, 6, 10}, {10, 10, 12, 12}, {1, -3, 7, -3}};
   cases.push_back({"example", example, {3, -6}});
   cases.push_back({"eye on the root splitter's line (y = 10)", example, {20, 10}});
@@ -123,7 +123,7 @@ TEST_CASE("bsp: degenerate sets: collinear, overlapping, shared endpoints, T-jun
     cases.push_back({"near-degenerate 2^-" + std::to_string(p), near, {0.5, -9}});
   }
   std::map<Numeric, Failures> failures;
-  for (const Case& c : cases) run_case(c, failures);
+  for (const SceneCase& c : cases) run_case(c, failures);
   WARN("degenerate sets: " << cases.size() << " cases; failures: float " << failures[Numeric::f32] << ", double " << failures[Numeric::f64]);
   CHECK(failures[Numeric::f32] == Failures{13, 10, 8, 0});
   CHECK(failures[Numeric::f64] == Failures{8, 11, 9, 0});

@@ -11,7 +11,7 @@ using namespace sw::testing::bvh;
 
 namespace {
 
-constexpr std::array kModes{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
+constexpr std::array kBvhModes{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
 
 struct Tally {
   std::map<Numeric, int> wrong;
@@ -21,13 +21,13 @@ struct Tally {
 // Every query of `rays` on m in every mode; the builds' invariants once per mode.
 void run_all(const Mesh& m, const std::vector<RayIn>& rays, Tally& tally, bool any = false, double t_max = 0) {
   const auto tris = exact_tris(m);
-  for (const Numeric n : kModes) {
+  for (const Numeric n : kBvhModes) {
     INFO("mode " << numeric_name(n));
     CHECK(tree_invariants(m, find_algorithm("bvh-build").open(mesh_json(m), n).run(), n) == "");
   }
   for (const RayIn& r : rays) {
     ++tally.cases;
-    for (const Numeric n : kModes)
+    for (const Numeric n : kBvhModes)
       if (!judge(m, tris, r, n, any, t_max)) ++tally.wrong[n];
   }
 }
@@ -136,7 +136,7 @@ TEST_CASE("bvh: 10^4 identical triangles: the build stops, the lowest id wins", 
     tiny.v.push_back({x, 0, 0}), tiny.v.push_back({x, 1, 0}), tiny.v.push_back({x, 0, 1});
     tiny.f.push_back({static_cast<std::int32_t>(base), static_cast<std::int32_t>(base) + 1, static_cast<std::int32_t>(base) + 2});
   }
-  for (const Numeric n : kModes) CHECK(tree_invariants(tiny, find_algorithm("bvh-build").open(mesh_json(tiny), n).run(), n) == "");
+  for (const Numeric n : kBvhModes) CHECK(tree_invariants(tiny, find_algorithm("bvh-build").open(mesh_json(tiny), n).run(), n) == "");
   Json r;
   const auto tris = exact_tris(m);
   CHECK(judge(m, tris, {{0.25, 0.25, 1}, {0, 0, -1}}, Numeric::exact, false, 0, &r));

@@ -12,7 +12,7 @@ using namespace sw::testing::kd;
 namespace {
 
 // The expected node: its cell and primitives, stated from its parent's by the closed-cell rule.
-template <int D> struct Want {
+template <int D> struct WantNode {
   Box<Q, D> cell;
   std::int64_t parent = -1;
   int depth = 0;
@@ -27,7 +27,7 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
   Recorder<Q> t;
   const KdTree<Q, D> tree = kd_build<Q, D>(b, points, t);
   const std::size_t n = b.size();
-  std::vector<Want<D>> want(1);
+  std::vector<WantNode<D>> want(1);
   want[0].cell = b[0];
   for (const auto& x : b) want[0].cell.grow(x);
   for (std::size_t i = 0; i < n; ++i) want[0].prims.push_back(static_cast<std::int32_t>(i));
@@ -43,7 +43,7 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
   } best;
   Q leaf_cost;
   std::size_t leaves = 0, max_depth = 0;
-  auto counts = [&](const Want<D>& w, int k, const Q& p, int side) {  // side 0 flats left, 1 right, 2 both
+  auto counts = [&](const WantNode<D>& w, int k, const Q& p, int side) {  // side 0 flats left, 1 right, 2 both
     std::size_t nl = 0, nr = 0;
     for (std::int32_t i : w.prims) {
       const Q &lo = b[i].lo[k], &hi = b[i].hi[k];
@@ -80,7 +80,7 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
       REQUIRE(!order.empty());
       cur = order.back();
       order.pop_back();
-      const Want<D>& w = want[cur];
+      const WantNode<D>& w = want[cur];
       CHECK(sv["node"] == Q(cur));
       CHECK(sv["n"] == Q(w.prims.size()));
       CHECK(sv["depth"] == w.depth);
@@ -89,7 +89,7 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
       best = Choice{};
       leaf_cost = Q(5 * kKdIntersectCost) * Q(w.prims.size()) * half_area<D>(w.cell);
     } else if (line == "best") {
-      const Want<D>& w = want[cur];
+      const WantNode<D>& w = want[cur];
       const int k = static_cast<int>(sv["axis"].get_num().get_si());
       // Candidates: the distinct bounds strictly inside the cell, in order; flats left, then right.
       std::vector<Q> ps;
@@ -122,7 +122,7 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
         CHECK(item.value == std::optional<Q>(axis_best.cost));
       }
     } else if (line == "leaf") {
-      const Want<D>& w = want[cur];
+      const WantNode<D>& w = want[cur];
       CHECK(sv["node"] == Q(cur));
       CHECK(sv["n"] == Q(w.prims.size()));
       CHECK(sv["leaf_cost"] == leaf_cost);
@@ -145,8 +145,8 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
       CHECK(sv["flat_left"] == Q(best.flat_left));
     } else if (line == "split") {
       // The children's primitives: left if lo <= p, right if hi >= p; flat at p: the chosen side.
-      const Want<D> w = want[cur];
-      Want<D> l, r;
+      const WantNode<D> w = want[cur];
+      WantNode<D> l, r;
       const int k = best.axis;
       for (std::int32_t i : w.prims) {
         const Q &lo = b[i].lo[k], &hi = b[i].hi[k];
@@ -156,7 +156,7 @@ template <int D> void check_build(const std::vector<Box<Q, D>>& b, bool points) 
       }
       CHECK(l.prims.size() == best.nl);
       CHECK(r.prims.size() == best.nr);
-      auto events0 = [&](const Want<D>& c) {
+      auto events0 = [&](const WantNode<D>& c) {
         std::size_t e = 0;
         for (std::int32_t i : c.prims) e += b[i].lo[0] == b[i].hi[0] ? 1 : 2;
         return e;

@@ -19,13 +19,13 @@
 #include "tracer/pov_compare.hpp"
 #include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
+using sw::testing::kScenes;
 namespace fs = std::filesystem;
 
 namespace {
-
-const fs::path kScenes = fs::path(SW_SOURCE_DIR) / "scenes";
 
 tracer::Scene example(const std::string& name) { return tracer::read_scene_file((kScenes / (name + ".json")).string()); }
 

@@ -13,13 +13,13 @@
 #include "scene_gen.hpp"
 #include "tracer/plan.hpp"
 #include "tracer/render.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
+using sw::testing::kScenes;
 namespace fs = std::filesystem;
 
 namespace {
-
-const fs::path kScenes = fs::path(SW_SOURCE_DIR) / "scenes";
 
 tracer::Scene scene_of(const Json& j) {
   tracer::SceneOptions opt;

@@ -6,13 +6,13 @@
 #include <fstream>
 #include "cli_harness.hpp"
 #include "tracer/scene.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
+using sw::testing::kScenes;
 namespace fs = std::filesystem;
 
 namespace {
-
-const fs::path kScenes = fs::path(SW_SOURCE_DIR) / "scenes";
 
 // A small valid scene; each bad case patches it with a JSON merge patch (RFC 7386).
 Json base_scene() {
