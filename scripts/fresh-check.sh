@@ -24,12 +24,14 @@ if [ ! -f "$ROOT/etc/debian_version" ]; then
     { tail -20 "$ROOT.debootstrap.log"; exit 1; }
   echo "fresh-check: debootstrap of bookworm from $mirror in $((SECONDS - start)) s"
 fi
-# A fresh machine has these: the kernel's filesystems, a /dev/shm (Chromium needs it), DNS.
+# A fresh machine has these: the kernel's filesystems, a /dev/shm, DNS, and the /etc/hosts that
+# Debian's installer writes (debootstrap does not; without it 'localhost' does not resolve).
 mount -t proc proc "$ROOT/proc"
 mount --rbind /sys "$ROOT/sys"
 mount --rbind /dev "$ROOT/dev"
 mountpoint -q "$ROOT/dev/shm" || mount -t tmpfs shm "$ROOT/dev/shm"
 cp /etc/resolv.conf "$ROOT/etc/resolv.conf"
+[ -f "$ROOT/etc/hosts" ] || printf '127.0.0.1\tlocalhost\n::1\tlocalhost ip6-localhost ip6-loopback\n' >"$ROOT/etc/hosts"
 # The repository as a clone of HEAD, the way a student gets it (git is not in minbase: copy the clone in).
 rm -rf "$ROOT/root/stepwise"
 git clone -q --no-hardlinks "$PWD" "$ROOT/root/stepwise"

@@ -89,6 +89,12 @@ def main():
     chromium, chromedriver = shutil.which("chromium"), shutil.which("chromedriver")
     if not chromium or not chromedriver:
         fail("chromium and chromedriver are needed (scripts/setup.sh installs them)")
+    # chromedriver reaches Chromium's DevTools at ws://localhost; where the name does not resolve (a
+    # root without /etc/hosts) the session fails with "unable to connect to renderer".
+    try:
+        socket.getaddrinfo("localhost", None)
+    except socket.gaierror:
+        fail("'localhost' does not resolve (is /etc/hosts missing?): chromedriver reaches Chromium through it")
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     page_dir = os.path.join(work, "page")
@@ -113,8 +119,7 @@ def main():
             fail("chromedriver did not start")
         caps = {"browserName": "chrome", "goog:loggingPrefs": {"browser": "ALL"},
                 "goog:chromeOptions": {"binary": chromium, "args": [
-                    # Shared memory in /tmp, not /dev/shm: a root without a /dev/shm mount (a fresh
-                    # debootstrapped machine, a container) otherwise fails "unable to connect to renderer".
+                    # Shared memory in /tmp, not /dev/shm, which a container or a bare root may lack.
                     "--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,1000",
                     "--user-data-dir=" + os.path.join(work, "profile")]}}
         d.sid = d.call("POST", "/session", {"capabilities": {"alwaysMatch": caps}})["sessionId"]
