@@ -1,6 +1,6 @@
-// The ray family's intersection Specs, shared by the units that register them (ray_plane_box.cpp,
-// ray_spheres.cpp, ray_triangles.cpp: each instantiates only its own tests, so changing one test
-// rebuilds one unit). Semantics: docs/rays/semantics.md.
+// The ray family's intersection Specs, shared by the units that register them: ray_plane_box.cpp,
+// ray_spheres.cpp and ray_triangles.cpp each instantiate only their own intersection tests, so a
+// change to one test rebuilds one unit. Semantics: docs/rays/semantics.md.
 #pragma once
 #include <cmath>
 #include <memory>
