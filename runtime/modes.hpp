@@ -65,6 +65,16 @@ template <class Spec> auto preparer(const typename Spec::Input& in) {
   return [&in]<class S>() { return Spec::template prepare<S>(in); };
 }
 
+// Filtered mode's certification, as a Recorder's Check: every recorded number of a filter stage
+// must be certified to kFilteredTraceRel, else the stage is Uncertain. At namespace scope so that
+// the three ways a mode is computed (run, record, stream) share one instance of each compute.
+template <class S> struct CertifyStep {
+  static void check(std::span<const S> xs) {
+    for (const S& x : xs)
+      if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
+  }
+};
+
 // Computes the output for mode n. `visit(type_identity<Num>, compute)` makes a probe, calls
 // compute(probe) and does what it likes with the probe afterwards. Filtered mode decides first on
 // the filter stages and traces the first stage that is certain in its decisions and its recorded
@@ -84,15 +94,9 @@ auto compute_mode(const typename Spec::Input& in, Numeric n, Visit&& visit, bool
         if constexpr (!std::is_same_v<S, Rational>) {
           // Undecided, or a recorded number not certified to kFilteredTraceRel: the next stage.
           // The recorder checks each step and forgets it, so memory stays flat.
-          struct Certify {
-            static void check(std::span<const S> xs) {
-              for (const S& x : xs)
-                if (!num::certified(x, kFilteredTraceRel)) throw Uncertain{};
-            }
-          };
-          Recorder<S, Certify> rec;
+          Recorder<S, CertifyStep<S>> rec;
           (void)Spec::template compute<S>(prepared, rec);
-          Certify::check(rec.numbers());  // the last step's
+          CertifyStep<S>::check(rec.numbers());  // the last step's
         }
         stage = k;
         return 0;
