@@ -13,9 +13,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const sw::vis::Lesson l = sw::vis::parse_lesson(std::string(reinterpret_cast<const char*>(data), size), "fuzz.md");
     sw::Budget small;
     small.max_steps = 2000;  // a fuzz run stays fast; larger lessons are refused by the budget
-    const auto run = sw::vis::record_model(l.run->in(sw::vis::quiz_numeric(l)), small);
-    for (std::size_t s = 0; s < run->size(); ++s) (void)sw::vis::narrate(l, *run, s);
-    for (const sw::vis::Question& q : sw::vis::quiz_questions(l, *run)) (void)sw::vis::grade(q, q.answer);
+    const sw::vis::QuizRuns runs = sw::vis::record_quiz_runs(l, small);
+    for (std::size_t s = 0; s < runs.run->size(); ++s) (void)sw::vis::narrate(l, *runs.run, s);
+    for (const sw::vis::Question& q : sw::vis::quiz_questions(l, *runs.run, runs.compared.get())) (void)sw::vis::grade(q, q.answer);
   } catch (const sw::InputError&) {
   }
   return 0;

@@ -1,6 +1,7 @@
 // Lessons v2: section choice, templates, conditions, the lint on every lesson and on broken ones,
 // and quizzes graded against the exact trace.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
 #include "lessons/lesson.hpp"
 #include "lessons/quiz.hpp"
@@ -169,6 +170,72 @@ TEST_CASE("lessons: quiz answers are graded against the exact trace", "[lesson][
     CHECK_THROWS_AS(grade(*q, "no-such-line"), InputError);
   }
 
+}
+
+TEST_CASE("lessons: float questions are graded against both runs, flag and vs questions against the recorded value", "[lesson][quiz]") {
+  SECTION("same: float's pixel at x = 1968 against exact's, read from both runs") {
+    const Lesson l = load_lesson(kLessons / "04-float-drift.md");
+    const auto exact = run_of(l, Numeric::exact), flt = run_of(l, Numeric::f32);
+    const auto q = question_at(l, *exact, 3938, nullptr, flt.get());
+    REQUIRE(q);
+    REQUIRE(q->type == QuizType::same);
+    const auto a = exact->pixel_at(q->answer_step), b = flt->pixel_at(q->answer_step);
+    REQUIRE(a);
+    REQUIRE(b);
+    CHECK(a->x == 1968);
+    const bool same = a->x == b->x && a->y == b->y;  // exact (1968, 656), float (1968, 657)
+    CHECK(grade(*q, same ? "same" : "differs").right);
+    CHECK_FALSE(grade(*q, !same).right);
+    CHECK_THROWS_AS(grade(*q, "maybe"), InputError);
+    CHECK_FALSE(question_at(l, *exact, 3938));  // no compared run: not asked
+  }
+  SECTION("diverge: the first plot where the runs' pixels differ") {
+    const Lesson l = load_lesson(kLessons / "08-forward-difference-drift.md");
+    const auto exact = run_of(l, Numeric::exact), flt = run_of(l, Numeric::f32);
+    const auto q = question_at(l, *exact, 221, nullptr, flt.get());
+    REQUIRE(q);
+    REQUIRE(q->type == QuizType::diverge);
+    std::optional<std::size_t> first;
+    for (std::size_t k = 0; k < exact->plots().size() && k < flt->plots().size() && !first; ++k)
+      if (exact->plots()[k].cell.x != flt->plots()[k].cell.x || exact->plots()[k].cell.y != flt->plots()[k].cell.y) first = exact->plots()[k].step;
+    REQUIRE(first);
+    CHECK(grade(*q, *first).right);
+    CHECK_FALSE(grade(*q, *first + 2).right);
+    CHECK(grade(*q, *first + 2).expected == "step " + std::to_string(*first));
+    CHECK_THROWS_AS(grade(*q, -3), InputError);
+  }
+  SECTION("flag: total internal reflection, from the recorded cosine by the critical-angle test") {
+    const Lesson l = load_lesson(kLessons / "24-glass-tir.md");
+    const auto m = run_of(l, quiz_numeric(l));
+    for (const std::size_t step : {std::size_t{110}, std::size_t{156}}) {
+      const auto q = question_at(l, *m, step);
+      REQUIRE(q);
+      REQUIRE(q->type == QuizType::flag);
+      const VarRecord* c = m->latest_var(step, "c");
+      REQUIRE(c);
+      const double cos_i = m->trace().component_double(*c, 0), n1 = 1.5;  // glass to air
+      const bool tir = n1 * n1 * (1 - cos_i * cos_i) > 1;
+      INFO("step " << step << ", cos " << cos_i);
+      CHECK(grade(*q, tir ? "yes" : "no").right);
+      CHECK(grade(*q, tir).right);
+      CHECK_FALSE(grade(*q, !tir).right);
+    }
+  }
+  SECTION("sign vs: the exact Fresnel factor at e.h = 1/sqrt(101) against 1/2") {
+    const Lesson l = load_lesson(kLessons / "21-fresnel-grazing.md");
+    const auto m = run_of(l, quiz_numeric(l));
+    const auto q = question_at(l, *m, 3);
+    REQUIRE(q);
+    REQUIRE(q->type == QuizType::sign);
+    REQUIRE(q->than == "1/2");
+    const double c = 1 / std::sqrt(101.0), g = std::sqrt(1.5 * 1.5 - 1 + c * c);  // unpolarised, index 1.5
+    const double F = 0.5 * std::pow((g - c) / (g + c), 2) * (1 + std::pow((c * (g + c) - 1) / (c * (g - c) + 1), 2));
+    CHECK(F == Approx(0.573).epsilon(0.01));
+    CHECK(grade(*q, F > 0.5 ? "above" : "below").right);
+    CHECK(grade(*q, F > 0.5 ? 1 : -1).right);
+    CHECK_FALSE(grade(*q, "equal").right);
+    CHECK(answer_text(*q, Json(-1)) == "below");
+  }
 }
 
 TEST_CASE("lessons: a template quotes the variable of the step's own listing before a callee's", "[lesson]") {

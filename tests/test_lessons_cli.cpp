@@ -49,7 +49,7 @@ TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers c
   INFO(o.out << o.err);
   CHECK(o.status == 1);  // graded, but lines were skipped
   CHECK(o.out.find("ann: 1 of 1 answered right\n  step 2 sign: right: negative") != std::string::npos);  // the first answer
-  CHECK(o.out.find("bob: 0 of 1 answered right\n  step 2 sign: wrong: answered positive, the exact run gives negative") != std::string::npos);
+  CHECK(o.out.find("bob: 0 of 1 answered right\n  step 2 sign: wrong: answered positive, the truth is negative") != std::string::npos);
   CHECK(o.out.find("\nann: 9 of 9") == std::string::npos);  // the forged line is escaped into its name
   CHECK(o.out.find("\"eve\\nann: 9 of 9 answered right\": 1 of 1 answered right") != std::string::npos);
   CHECK(o.out.find("step 2 sign: 2 of 4 right") != std::string::npos);

@@ -109,6 +109,24 @@ TEST_CASE("visualizer classroom: presentation mode by key, with bigger fonts", "
   CHECK_FALSE(app.presenting());
 }
 
+TEST_CASE("visualizer classroom: every lesson's key step text is in view on open, and in presentation mode", "[visualizer][classroom][lesson]") {
+  for (const bool presenting : {false, true}) {
+    HeadlessHost host(1024, 640);
+    App& app = host.app();
+    app.set_presenting(presenting);
+    for (const auto& file : lesson_manifest(default_lessons_dir())) {
+      INFO(file.filename().string() << (presenting ? ", presenting" : ""));
+      REQUIRE(app.session().open_lesson(file));
+      REQUIRE_FALSE(narrate(*app.session().lesson(), *app.session().model(0), app.session().step()).empty());
+      host.render(3);
+      // Its first two lines at least, below the title row and inside the panel.
+      const PanelRect& r = app.layout().narration;
+      CHECK(app.narration_marks().text_y > r.pos.y);
+      CHECK(app.narration_marks().text_y + 2 * ImGui::GetFontSize() <= r.bottom());
+    }
+  }
+}
+
 TEST_CASE("visualizer classroom: the Lesson menu lists titles in manifest order, Ctrl+Right and Ctrl+Left move along it",
           "[visualizer][classroom]") {
   HeadlessHost host(1024, 640);

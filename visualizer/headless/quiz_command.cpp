@@ -57,7 +57,7 @@ void print_grades(const ClassGrades& g, const std::vector<Question>& questions, 
       if (!cell[s * nq + q]) continue;
       const GradedAnswer& a = *cell[s * nq + q];
       if (o.json) list.push_back({{"step", a.question->step}, {"type", quiz_type_name(a.question->type)}, {"right", a.right}, {"answer", a.given}, {"expected", a.expected}});
-      else std::cout << "  " << label(*a.question) << ": " << (a.right ? "right: " + a.expected : "wrong: answered " + a.given + ", the exact run gives " + a.expected) << '\n';
+      else std::cout << "  " << label(*a.question) << ": " << (a.right ? "right: " + a.expected : "wrong: answered " + a.given + ", the truth is " + a.expected) << '\n';
     }
     if (o.json)
       std::cout << Json{{"student", g.students[s]}, {"right", right[s]}, {"answered", answered[s]}, {"answers", list}}.dump(-1, ' ', false, Json::error_handler_t::replace) << '\n';
@@ -83,15 +83,15 @@ int run_quiz(const QuizOptions& o) {
   const Lesson lesson = load_lesson(o.lesson);
   Budget budget;
   budget.max_steps = o.max_steps;
-  const auto run = record_model(lesson.run->in(quiz_numeric(lesson)), budget);
-  const std::vector<Question> questions = quiz_questions(lesson, *run);
+  const QuizRuns runs = record_quiz_runs(lesson, budget);
+  const std::vector<Question> questions = quiz_questions(lesson, *runs.run, runs.compared.get());
   if (o.list) {
     for (const Question& q : questions) {
       if (o.json) {
         std::cout << Json{{"step", q.step}, {"type", quiz_type_name(q.type)}, {"prompt", q.prompt}, {"choices", q.choices}}.dump() << '\n';
         continue;
       }
-      std::cout << "step " << q.step << "  " << quiz_type_name(q.type) << (q.var.empty() ? "" : " " + q.var) << "  " << q.prompt;
+      std::cout << "step " << q.step << "  " << quiz_type_name(q.type) << (q.var.empty() ? "" : " " + q.var) << (q.than.empty() ? "" : " vs " + q.than) << "  " << q.prompt;
       if (!q.choices.empty()) {
         std::cout << "  [";
         for (std::size_t i = 0; i < q.choices.size(); ++i) std::cout << (i ? ", " : "") << q.choices[i];

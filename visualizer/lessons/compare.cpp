@@ -35,6 +35,7 @@ Json carried_input(const Json& input, const Json& previous) {
 namespace {
 
 bool same_decisions(const TraceView& a, const TraceView& b, std::size_t s) {
+  if (s >= a.size() || s >= b.size()) return false;
   const StepRecord &x = a.at(s), &y = b.at(s);
   if (x.line != y.line || x.kind != y.kind || x.scope != y.scope) return false;
   if (x.var_end - x.var_begin != y.var_end - y.var_begin || x.geo_end - x.geo_begin != y.geo_end - y.geo_begin) return false;
@@ -68,13 +69,15 @@ bool same_values(const TraceView& a, const TraceView& b, std::size_t s) {
 
 }  // namespace
 
+bool same_decisions_at(const TraceModel& a, const TraceModel& b, std::size_t s) { return same_decisions(a.trace(), b.trace(), s); }
+
 CompareStats compare_traces(const TraceModel& a, const TraceModel& b) {
   CompareStats st;
   st.steps_a = a.size(), st.steps_b = b.size();
   st.pixels_a = a.plots().size(), st.pixels_b = b.plots().size();
   const std::size_t common = std::min(a.size(), b.size());
   for (std::size_t s = 0; s < common; ++s) {
-    const bool decisions = same_decisions(a.trace(), b.trace(), s);
+    const bool decisions = same_decisions_at(a, b, s);
     if (!st.first_value_divergence && (!decisions || !same_values(a.trace(), b.trace(), s))) st.first_value_divergence = s;
     if (!decisions) {
       if (!st.first_decision_divergence) st.first_decision_divergence = s;

@@ -47,5 +47,8 @@ struct CompareStats {
 };
 
 CompareStats compare_traces(const TraceModel& a, const TraceModel& b);
+// Whether step s (which both have) agrees in line, kind, scope, integers and decision geometry:
+// the rule of first_decision_divergence, as in `check --decisions-only`.
+bool same_decisions_at(const TraceModel& a, const TraceModel& b, std::size_t s);
 
 }  // namespace sw::vis

@@ -99,8 +99,17 @@ Narration parse_heading(const std::string& heading, const Lesson& lesson) {
     if (type == "pixel") n.quiz = QuizType::pixel;
     else if (type == "branch") n.quiz = QuizType::branch;
     else if (type == "hit") n.quiz = QuizType::hit;
-    else if (type == "sign" && i + 1 < w.size()) n.quiz = QuizType::sign, n.quiz_var = w[++i];
-    else throw InputError("quiz type '" + type + "': expected pixel, branch, sign VAR or hit");
+    else if (type == "same") n.quiz = QuizType::same;
+    else if (type == "diverge") n.quiz = QuizType::diverge;
+    else if (type == "sign" && i + 1 < w.size()) {
+      n.quiz = QuizType::sign, n.quiz_var = w[++i];
+      if (i + 2 < w.size() && w[i + 1] == "vs") {
+        n.quiz_than = w[i + 2], i += 2;
+        parse_rational(Json(n.quiz_than), "the number after 'vs'");  // throws InputError if it is not one
+      }
+    }
+    else if (type == "flag" && i + 1 < w.size()) n.quiz = QuizType::flag, n.quiz_var = w[++i];
+    else throw InputError("quiz type '" + type + "': expected pixel, branch, sign VAR, hit, flag VAR, same or diverge");
     ++i;
   }
   if (i + 2 > w.size() || w[i] != "on")

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 #include "catalog.hpp"
 #include "lessons/compare.hpp"
@@ -18,8 +19,10 @@ struct Condition {
   std::string lhs, op, rhs;
 };
 
-// What a quiz point asks about the step after the one it is on (docs/lessons.md, Quizzes).
-enum class QuizType { pixel, branch, sign, hit };
+// What a quiz point asks about the steps after the one it is on (docs/lessons.md, Quizzes): the
+// next pixel, line, sign of a variable, hit or miss, whether a flag variable is set; and, against
+// the compared number type's run, whether it does the same next and where it first leaves.
+enum class QuizType { pixel, branch, sign, hit, flag, same, diverge };
 
 struct Narration {
   enum class Key { intro, line, kind, step } key = Key::intro;
@@ -33,7 +36,8 @@ struct Narration {
   std::size_t source_line = 0;     // 1-based line of the heading in the file
   std::string text;                // Markdown body, {templates} unfilled
   std::optional<QuizType> quiz;    // "## quiz ...": a question, its body the explanation
-  std::string quiz_var;            // QuizType::sign: the variable
+  std::string quiz_var;            // QuizType::sign and flag: the variable ("e", "c.r", "l[2]")
+  std::string quiz_than;           // QuizType::sign: "sign F vs 1/2" compares F with 1/2 ("" = 0)
   std::string prompt;              // the question
 };
 
@@ -58,6 +62,9 @@ struct Lesson {
   // The quiz section at `step` of `run`, or nullptr.
   const Narration* quiz_for(const TraceModel& run, std::size_t step) const;
 };
+
+// A variable reference: "q.x" -> ("q", 0), "c.g" -> ("c", 1), "l[2]" -> ("l", 2), "e" -> ("e", none).
+std::pair<std::string, std::optional<std::uint32_t>> split_ref(const std::string& ref);
 
 // A section's text at one step: templates filled; problems name what did not resolve.
 struct Filled {

@@ -50,6 +50,10 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
   const auto& secs = lesson.sections;
   std::vector<bool> shown(secs.size()), matched(secs.size());
   const Numeric quiz_mode = quiz_numeric(lesson);
+  const TraceModel* compared = nullptr;  // the float questions' other run
+  if (const auto c = quiz_compared_numeric(lesson))
+    for (const auto& r : runs)
+      if (&r->algorithm() == lesson.algorithm && r->numeric() == *c) compared = r.get();
   std::map<const Narration*, std::string> unasked;
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const TraceModel& run = *runs[r];
@@ -69,7 +73,7 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
         }
       if (const Narration* n = quiz_run ? lesson.quiz_for(run, s) : nullptr) {
         std::string why;
-        if (question_at(lesson, run, s, &why)) {
+        if (question_at(lesson, run, s, &why, compared)) {
           shown[n - secs.data()] = true;
           for (const std::string& p : fill_templates(n->prompt, run, s).problems) at(n->source_line, p);
         } else {

@@ -8,9 +8,7 @@
 #include "lessons/trace_model.hpp"
 
 namespace sw::vis {
-namespace {
 
-// "q.x" -> ("q", 0); "l[2]" -> ("l", 2); "e" -> ("e", none).
 std::pair<std::string, std::optional<std::uint32_t>> split_ref(const std::string& ref) {
   if (const auto dot = ref.rfind('.'); dot != std::string::npos && dot + 2 == ref.size()) {
     static constexpr std::string_view kNames = "xyzrgb";
@@ -26,6 +24,8 @@ std::pair<std::string, std::optional<std::uint32_t>> split_ref(const std::string
   }
   return {ref, std::nullopt};
 }
+
+namespace {
 
 bool is_number(const std::string& s) {
   const std::size_t i = !s.empty() && (s[0] == '-' || s[0] == '+') ? 1 : 0;
@@ -52,18 +52,27 @@ std::optional<Resolved> resolve(const std::string& ref, const TraceModel& run, s
   return Resolved{v, component.value_or(0), !component};
 }
 
-std::string decimal(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
+std::string decimal(double x, int digits = 6) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
 }
 
-// One component as the state panel shows it: exact "p/q ≈ decimal", an integer as it is, a float's shortest digits.
+// A template's format: "exact", "dec" (6 significant digits) or a digit count 1..17; 0 if none of these.
+int format_digits(const std::string& format) {
+  if (format == "dec") return 6;
+  if (format.size() > 2 || format.empty() || !std::all_of(format.begin(), format.end(), [](char c) { return c >= '0' && c <= '9'; })) return 0;
+  const int n = std::stoi(format);
+  return n >= 1 && n <= 17 ? n : 0;
+}
+
+// One component as the state panel shows it: exact "p/q ≈ decimal", an integer as it is, a float's shortest digits;
+// or rounded to the format's significant digits (an integer stays whole).
 std::string component_text(const TraceModel& run, const VarRecord& v, std::uint32_t k, const std::string& format) {
   const TraceView& t = run.trace();
   const std::string text = v.is_int ? std::to_string(t.int_value(v.slot + k)) : t.num_text(v.slot + k);
   const double d = t.component_double(v, k);
-  if (format == "dec") return decimal(d);
+  if (const int digits = format_digits(format); digits && !v.is_int) return decimal(d, digits);
   if (format == "exact" || text.find('/') == std::string::npos) return text;
   return text + " \xE2\x89\x88 " + decimal(d);
 }
@@ -158,8 +167,8 @@ Filled fill_templates(const std::string& text, const TraceModel& run, std::size_
     std::string ref = text.substr(i + 1, close - i - 1), format;
     if (const auto colon = ref.find(':'); colon != std::string::npos) format = ref.substr(colon + 1), ref = ref.substr(0, colon);
     i = close;
-    if (!format.empty() && format != "exact" && format != "dec") {
-      out.problems.push_back("template '{" + ref + ":" + format + "}': the format is exact or dec");
+    if (!format.empty() && format != "exact" && !format_digits(format)) {
+      out.problems.push_back("template '{" + ref + ":" + format + "}': the format is exact, dec or a digit count 1 to 17");
       continue;
     }
     if (ref == "step") {

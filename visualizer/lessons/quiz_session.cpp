@@ -27,6 +27,11 @@ const Question* QuizSession::pending(std::size_t step) const {
   return q && !answered(step) ? q : nullptr;
 }
 
+std::size_t QuizSession::shown(std::size_t step) const {
+  const Question* q = pending(step);
+  return q ? q->shown_step : step;
+}
+
 std::size_t QuizSession::gate(std::size_t from, std::size_t target) const {
   if (!on_ || target <= from) return target;
   for (const Question& q : questions_)

@@ -30,6 +30,10 @@ class QuizSession {
   const Answered* answered(std::size_t step) const;
   // The question waiting at `step`: there, and not yet answered.
   const Question* pending(std::size_t step) const;
+  // The step whose frame the screen shows at `step`: the waiting question's shown_step, else step.
+  std::size_t shown(std::size_t step) const;
+  // Whether every question has been answered (the views that show a whole sweep wait for it).
+  bool finished() const { return answered_.size() >= questions_.size(); }
   // Where a forward move from `from` to `target` stops: the first unanswered question in
   // [from, target), or target itself.
   std::size_t gate(std::size_t from, std::size_t target) const;

@@ -258,11 +258,13 @@ bool Session::set_quiz(bool on) {
   if (!lesson_) return false;
   const Lesson& l = *lesson_;
   // The quiz is checked against the exact run, so that is the run the student steps through:
-  // the lesson's own input, opened when the lesson was read.
+  // the lesson's own input, opened when the lesson was read. Float questions need the compared
+  // number type's run beside it.
   std::string err;
   try {
     const std::optional<Run> other = !on && l.compare.other ? l.compare_run : std::nullopt;
-    err = load(l.run->in(on ? quiz_numeric(l) : l.numeric), on ? Comparison{} : l.compare, true, other);
+    const Comparison quiz_compare = quiz_compared_numeric(l) ? Comparison(*quiz_compared_numeric(l)) : Comparison{};
+    err = load(l.run->in(on ? quiz_numeric(l) : l.numeric), on ? quiz_compare : l.compare, true, other);
   } catch (const std::exception& e) {
     err = std::string(l.algorithm->id) + ": " + e.what();
   }
@@ -271,7 +273,7 @@ bool Session::set_quiz(bool on) {
     return false;
   }
   quiz_.stop();
-  if (on) quiz_.start(quiz_questions(l, *a_));
+  if (on) quiz_.start(quiz_questions(l, *a_, b_.get()));
   timeline_.set_playing(false);
   timeline_.set_step(0);
   set_step(on ? 0 : l.start_step);

@@ -86,6 +86,13 @@ class Session {
   // unanswered question (which also stops playback).
   const Timeline& timeline() const { return timeline_; }
   std::size_t step() const { return timeline_.step(); }
+  // The step the views, the state and the narration show: step(), except at a waiting quiz
+  // question, whose frame must not give its answer away (Question::shown_step).
+  std::size_t shown_step() const { return quiz_.shown(step()); }
+  // Quiz mode: views say nothing of steps after shown_step(), and hide what a whole sweep shows
+  // until every question is answered.
+  bool hide_future() const { return quiz_.on(); }
+  bool hide_sweep() const { return quiz_.on() && !quiz_.finished(); }
   std::size_t steps() const { return a_ ? a_->size() : 0; }
   void set_step(std::size_t step);
   void step_back();              // Left: one step, and pause
@@ -106,7 +113,8 @@ class Session {
   std::optional<std::size_t> take_focus() { return std::exchange(focus_, std::nullopt); }
 
   // [SECTION] the quiz (a lesson only): the run switches to the quiz's exact number type from
-  // step 0, stepping forward stops at each question until it is answered.
+  // step 0 (beside the lesson's other number type, when it compares two), stepping forward stops
+  // at each question until it is answered.
   bool set_quiz(bool on);
   bool quiz() const { return quiz_.on(); }
   const QuizSession& quiz_session() const { return quiz_; }

@@ -33,11 +33,11 @@ void App::frame(float dt) {
   // with the narration under it on the left; the listing and the state on the right (layout.cpp).
   LayoutInput in{ImGui::GetIO().DisplaySize, ImGui::GetFontSize(), toolbar_.measured_height(), timeline_content_h_,
                  listing_.measured_height()};
-  in.lesson = session_.lesson() != nullptr, in.presenting = chrome_.presenting;
+  in.lesson = session_.lesson() != nullptr, in.presenting = chrome_.presenting, in.quiz = session_.quiz();
   const PanelLayout& l = layout_ = layout_panels(in);
   toolbar_.draw(session_, chrome_, l.toolbar);
   canvases_.draw(session_, chrome_, l.canvas);
-  draw_narration(session_, chrome_, l.narration);
+  narration_marks_ = draw_narration(session_, chrome_, l.narration);
   listing_.draw(session_, chrome_, l.listing);
   if (!chrome_.presenting) draw_state(session_, diff_plot_, l.state);
   timeline_content_h_ = draw_timeline(session_, chrome_, l.timeline);

@@ -45,6 +45,7 @@ class App {
   const std::vector<std::array<float, 3>>& listing_rows() const { return listing_.rows(); }
   const PanelLayout& layout() const { return layout_; }
   const DiffPlot& diff_plot() const { return diff_plot_; }
+  const NarrationMarks& narration_marks() const { return narration_marks_; }
 
  private:
   Session session_;
@@ -55,6 +56,7 @@ class App {
   CanvasPanel canvases_;
   ListingPanel listing_;
   float timeline_content_h_ = 0;  // measured each frame, for the next
+  NarrationMarks narration_marks_;
   DiffPlot diff_plot_;            // the compare view's |difference| plot (state panel)
   AccuracyWindow accuracy_;       // last: its destructor joins the bench threads first
 };

@@ -31,7 +31,8 @@ struct CanvasInput {
   bool keys = false;       // this canvas takes the pan/zoom keys
   bool follow = false;     // keep the current step in view (while playing)
   const char* label = "";  // drawn in the corner (e.g. the number type)
-  bool hide_future = false;  // quiz mode: say nothing of later steps (tooltips, jumps)
+  bool hide_future = false;  // quiz mode: draw and say nothing of steps after `step` (tooltips, jumps, counts)
+  bool hide_sweep = false;   // quiz mode until every question is answered: no whole-sweep picture
   std::span<const Pixel> marked;  // sorted cells to outline (the compare view's mismatched pixels)
 };
 

@@ -148,8 +148,9 @@ CanvasEvents ImageCanvas::draw(const CanvasInput& in, ImVec2 size) {
   const ImVec2 end(origin_.x + size.x, origin_.y + size.y);
   dl->PushClipRect(origin_, end, true);
   dl->AddRectFilled(origin_, end, theme::kCanvasBg);
-  if (!in.model || !in.model->algorithm().sweep) {
-    dl->AddText(ImVec2(origin_.x + 10, origin_.y + 10), theme::kLabel, "This algorithm declares no sweep.");
+  if (!in.model || !in.model->algorithm().sweep || in.hide_sweep) {
+    if (in.hide_sweep) sweep_hidden_note(dl, origin_);
+    else dl->AddText(ImVec2(origin_.x + 10, origin_.y + 10), theme::kLabel, "This algorithm declares no sweep.");
     dl->PopClipRect();
     return ev;
   }

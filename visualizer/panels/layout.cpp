@@ -22,7 +22,7 @@ PanelLayout layout_panels(const LayoutInput& in) {
   const float left = W - right;
   // Narration under the canvas; the canvas keeps at least 55% of the middle.
   float narration_h =
-      in.lesson ? std::clamp(mid * (in.presenting ? 0.33f : 0.25f), 7 * em, (in.presenting ? 22 : 15) * em) : 5 * em;
+      in.lesson ? std::clamp(mid * (in.presenting ? 0.33f : 0.25f), (in.quiz ? 12 : 7) * em, (in.presenting ? 22 : 15) * em) : 5 * em;
   narration_h = std::min(narration_h, mid * 0.45f);
   // The listing as tall as its text (up to 65%), the state panel at least 6 em under it.
   float listing_h = in.presenting ? mid : std::min(in.listing_content_h > 0 ? in.listing_content_h : mid * 0.5f, mid * 0.65f);

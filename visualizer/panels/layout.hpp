@@ -20,6 +20,7 @@ struct LayoutInput {
   float listing_content_h = 0;  // the listing's full height
   bool lesson = false;          // a lesson is open: the narration gets more room
   bool presenting = false;      // presentation mode: no state panel, more narration
+  bool quiz = false;            // quiz mode: room for the question and its buttons too
 };
 
 struct PanelLayout {

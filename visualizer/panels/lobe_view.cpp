@@ -48,8 +48,9 @@ CanvasEvents LobeCanvas::draw(const CanvasInput& in, ImVec2 size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(origin, end, true);
   dl->AddRectFilled(origin, end, theme::kCanvasBg);
-  if (!in.model || !in.model->algorithm().lobe) {
-    dl->AddText(ImVec2(origin.x + 10, origin.y + 10), theme::kLabel, "This algorithm declares no lobe.");
+  if (!in.model || !in.model->algorithm().lobe || in.hide_sweep) {
+    if (in.hide_sweep) sweep_hidden_note(dl, origin);
+    else dl->AddText(ImVec2(origin.x + 10, origin.y + 10), theme::kLabel, "This algorithm declares no lobe.");
     dl->PopClipRect();
     return ev;
   }

@@ -60,7 +60,7 @@ void CanvasPanel::draw(Session& s, Chrome& chrome, const PanelRect& r) {
     ImGui::PopStyleColor();
     if (s.loaded() && ImGui::SmallButton("Dismiss")) s.dismiss_error();
   }
-  if (s.model(1)) draw_compare_strip(s);
+  if (s.model(1) && !s.hide_future()) draw_compare_strip(s);  // its counts and jumps tell the future
   draw_tabs(s);
   sync(s);  // the strip's jumps and the tabs
   const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -77,8 +77,9 @@ void CanvasPanel::draw(Session& s, Chrome& chrome, const PanelRect& r) {
       if (i) canvases_[1]->follow(*canvases_[0]);
       // Keep the step in view while playing and after each step taken, never against a pan.
       const bool follow = i == 0 && (s.timeline().playing() || s.step() != followed_step_);
-      CanvasInput in{model, std::min(s.step(), model->last()), true, i == 0, follow, n > 1 ? (i ? label_b : label_a).c_str() : "", s.quiz(), {}};
-      if (s.compare_stats() && !cmp.other) in.marked = s.compare_stats()->mismatched_cells;
+      CanvasInput in{model, std::min(s.shown_step(), model->last()), true, i == 0, follow, n > 1 ? (i ? label_b : label_a).c_str() : "",
+                     s.hide_future(), s.hide_sweep(), {}};
+      if (s.compare_stats() && !cmp.other && !s.hide_future()) in.marked = s.compare_stats()->mismatched_cells;
       const CanvasEvents ev = canvases_[std::size_t(i)]->draw(in, ImVec2(w, avail.y));
       const Question* q = s.quiz_pending();
       if (ev.clicked_cell && q && q->type == QuizType::pixel) s.answer(Json::array({ev.clicked_cell->x, ev.clicked_cell->y}));

@@ -8,7 +8,7 @@ void ListingPanel::draw(const Session& s, const Chrome& c, const PanelRect& r) {
   // A step inside a nested call shows the callee's listing (its steps' lines are in it).
   const Algorithm* alg = s.algorithm();
   const TraceModel* m = s.model(0);
-  const std::size_t step = s.step();
+  const std::size_t step = s.shown_step();
   const StepRecord* st = alg && m ? &m->trace().at(step) : nullptr;
   const Listing* listing = alg ? &alg->listing : nullptr;
   std::string title = alg ? std::string(alg->listing.title) : std::string("Listing");

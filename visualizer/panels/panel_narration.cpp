@@ -85,9 +85,10 @@ void draw_markdown(const std::string& text, const theme::Fonts& fonts) {
   }
 }
 
-void draw_narration(Session& s, const Chrome& c, const PanelRect& r) {
+NarrationMarks draw_narration(Session& s, const Chrome& c, const PanelRect& r) {
   place_next(r.pos, r.size);
   const Lesson* lesson = s.lesson();
+  NarrationMarks marks;
   ImGui::Begin(lesson ? "Lesson###Narration" : "About###Narration", nullptr, kPanelFlags);
   if (lesson) {
     ImGui::PushFont(c.fonts.title);
@@ -97,9 +98,11 @@ void draw_narration(Session& s, const Chrome& c, const PanelRect& r) {
     bool quiz = s.quiz();
     if (ImGui::Checkbox("Quiz (Q)", &quiz)) s.set_quiz(quiz);
     lesson = s.lesson();
-    const std::size_t step = s.step();
-    if (!lesson->intro.empty() && ImGui::CollapsingHeader("Introduction", step == lesson->start_step ? ImGuiTreeNodeFlags_DefaultOpen : 0))
-      draw_markdown(lesson->intro, c.fonts);
+    // The question first, then the step's text, then the intro: what the step says stays in view
+    // on a small window, above a long introduction.
+    if (s.quiz()) draw_quiz(s, c), marks.quiz_bottom = ImGui::GetItemRectMax().y;
+    const std::size_t step = s.shown_step();
+    marks.text_y = ImGui::GetCursorScreenPos().y;
     if (const TraceModel* a = s.model(0)) {
       // Each run narrates its own step; two runs that say the same thing say it once.
       const TraceModel* b = s.model(1);
@@ -116,12 +119,14 @@ void draw_narration(Session& s, const Chrome& c, const PanelRect& r) {
       }
       ImGui::PopStyleColor();
     }
-    if (s.quiz()) draw_quiz(s, c);
+    if (!lesson->intro.empty() && ImGui::CollapsingHeader("Introduction", step == lesson->start_step ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+      draw_markdown(lesson->intro, c.fonts);
   } else if (const Algorithm* alg = s.algorithm()) {
     ImGui::TextWrapped("%s", std::string(alg->summary).c_str());
     ImGui::TextDisabled("No lesson open: pick one in the Lesson menu for narration.");
   }
   ImGui::End();
+  return marks;
 }
 
 }  // namespace sw::vis

@@ -1,6 +1,7 @@
 // Quiz mode's panel, under the narration: the score, the waiting question's prompt and its answer
 // buttons, then the grade and the explanation. The quiz itself is the Session's QuizSession
 // (lessons/quiz_session.hpp): its questions, the gate that stops stepping, the answers.
+#include <algorithm>
 #include "lessons/grading.hpp"
 #include "panels/panels.hpp"
 
@@ -25,33 +26,44 @@ void draw_quiz(Session& s, const Chrome& c) {
   ImGui::TextWrapped("%s", shown.prompt.empty() ? "Predict the next step." : shown.prompt.c_str());
   ImGui::PopStyleColor();
   if (q) {
-    auto buttons = [&](std::initializer_list<std::pair<const char*, Json>> options) {
-      for (const auto& [label, value] : options) {
-        if (ImGui::Button(label)) s.answer(value);
-        ImGui::SameLine();
-      }
-      ImGui::NewLine();
+    // One button per choice, wrapped onto the next row rather than clipped at the panel's edge.
+    bool first = true;
+    auto button = [&](const std::string& label, const Json& value) {
+      if (!first) flow(ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x);
+      first = false;
+      if (!ImGui::Button(label.c_str())) return false;
+      s.answer(value);
+      return true;
     };
     switch (q->type) {
       case QuizType::pixel: ImGui::TextDisabled("Click the cell you expect on the canvas."); break;
-      case QuizType::sign: buttons({{"negative", -1}, {"zero", 0}, {"positive", 1}}); break;
-      case QuizType::hit: buttons({{"hit", true}, {"miss", false}}); break;
+      case QuizType::sign:
+        if (q->than.empty()) button("negative", -1) || button("zero", 0) || button("positive", 1);
+        else button("below " + q->than, -1) || button("equal", 0) || button("above " + q->than, 1);
+        break;
+      case QuizType::hit: button("hit", true) || button("miss", false); break;
+      case QuizType::flag: button("yes", true) || button("no", false); break;
+      case QuizType::same: button("same", true) || button("differs", false); break;
+      case QuizType::diverge: {
+        static int guess = 0;  // one question waits at a time
+        ImGui::SetNextItemWidth(8 * ImGui::GetFontSize());
+        ImGui::InputInt("##diverge", &guess);
+        guess = std::max(guess, 0);
+        first = false;  // the button goes beside the field when it fits
+        button("Answer: step " + std::to_string(guess), Json(static_cast<std::size_t>(guess)));
+        break;
+      }
       case QuizType::branch:
-        for (const std::string& choice : q->choices) {
-          if (ImGui::Button(choice.c_str())) {
-            s.answer(choice);
-            break;
-          }
-          ImGui::SameLine();
-        }
-        ImGui::NewLine();
+        for (const std::string& choice : q->choices)
+          if (button(choice, choice)) break;
         break;
     }
     return;
   }
   const std::string said = answer_text(shown, done->given);
   if (done->grade.right) ImGui::TextColored(theme::kGood, "Right: %s.", said.c_str());
-  else ImGui::TextColored(theme::kError, "You said %s; the exact run says %s.", said.c_str(), done->grade.expected.c_str());
+  else ImGui::TextColored(theme::kError, "You said %s; the %s says %s.", said.c_str(),
+                          shown.type == QuizType::same || shown.type == QuizType::diverge ? "pair of runs" : "exact run", done->grade.expected.c_str());
   if (shown.section && !shown.section->text.empty()) draw_markdown(fill_templates(shown.section->text, *s.model(0), step).text, c.fonts);
   ImGui::TextDisabled("Step on (Right arrow) to see it happen.");
 }

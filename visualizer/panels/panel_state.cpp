@@ -53,7 +53,7 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
     return;
   }
   const TraceModel* b = s.model(1);
-  const std::size_t step = s.step();
+  const std::size_t step = s.shown_step();
   const bool other = s.comparison().other != nullptr;
   const auto sa = a->state_at(step);
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(4, 1));
@@ -86,7 +86,8 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
   const std::size_t step_b = std::min(step, b->last());
   const auto sb = b->state_at(step_b);
   if (step_b != step && !other) ImGui::TextColored(theme::kError, "%s has only %zu steps", s.run_name(1).c_str(), b->size());
-  const bool with_plot = !other;  // steps pair up only for two number types
+  // Steps pair up only for two number types; the quiz hides the plot, which spans the whole run.
+  const bool with_plot = !other && !s.hide_future();
   const float plot_h = 64;
   if (ImGui::BeginTable("vars2", 4, kTable, ImVec2(0, with_plot ? -(plot_h + ImGui::GetFrameHeightWithSpacing() + 8) : 0))) {
     ImGui::TableSetupScrollFreeze(0, 1);

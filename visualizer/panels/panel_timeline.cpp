@@ -71,7 +71,7 @@ float draw_timeline(Session& s, const Chrome& c, const PanelRect& r) {
   char format[160];  // the step, its line and kind on the slider: no row of their own
   std::snprintf(format, sizeof format, "step %%" PRIu64 " of %zu   line %u   %s", last, st.line, std::string(kind_name(st.kind)).c_str());
   if (ImGui::SliderScalar("##scrub", ImGuiDataType_U64, &at, &lo, &hi, format)) s.go(at);
-  if (const auto& stats = s.compare_stats(); stats && !s.comparison().other)
+  if (const auto& stats = s.compare_stats(); stats && !s.comparison().other && !s.hide_future())
     draw_divergence_ticks(ImGui::GetWindowDrawList(), stats->divergences, last, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
   // The keys, for the one at the keyboard, in one row: the longest that fits (none when presenting).
   const char* keys[] = {("Space play/pause   Left/Right step   Up/Down over calls   Home/End   +/- speed   wheel or PgUp/PgDn zoom   drag or Shift+arrows pan   "

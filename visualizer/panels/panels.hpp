@@ -5,6 +5,7 @@
 // panel_listing.cpp, panel_state.cpp, panel_narration.cpp (and panel_quiz.cpp).
 #pragma once
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -110,9 +111,13 @@ class ListingPanel {
 // the |difference| plot.
 void draw_state(Session& s, DiffPlot& plot, const PanelRect& r);
 
-// The narration: the lesson's title, intro and the section each run shows at the step, then the
-// quiz (panel_quiz.cpp); with no lesson, the algorithm's summary.
-void draw_narration(Session& s, const Chrome& c, const PanelRect& r);
+// The narration: the lesson's title, the quiz (panel_quiz.cpp) when on, the section each run shows
+// at the step, then the intro; with no lesson, the algorithm's summary. Returns where the step's
+// own text starts and where the quiz ends, in screen y (NaN for what is not drawn).
+struct NarrationMarks {
+  float text_y = NAN, quiz_bottom = NAN;
+};
+NarrationMarks draw_narration(Session& s, const Chrome& c, const PanelRect& r);
 void draw_quiz(Session& s, const Chrome& c);
 // Narration Markdown (lessons/markdown.hpp), laid out word by word.
 void draw_markdown(const std::string& text, const theme::Fonts& fonts);

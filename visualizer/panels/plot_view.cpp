@@ -98,16 +98,21 @@ CanvasEvents PlotCanvas::draw_inside(const CanvasInput& in, ImVec2 size) {
   const bool diff = difference();
   std::vector<double> series(n);
   for (std::size_t r = 0; r < n; ++r) series[r] = diff ? values_[r] - exact_[r] : values_[r];
-  // Quiz mode: rows after the current one are not drawn (the exact run is the run shown then).
-  if (const auto now = table_.row_of(in.step); in.hide_future && now)
-    for (std::size_t r = *now + 1; r < n; ++r) series[r] = NAN;
+  // Quiz mode: rows after the current one are not drawn, nor counted, nor hovered.
+  std::vector<double> exact = exact_;
+  const auto now = table_.row_of(in.step);
+  const std::size_t shown = in.hide_future ? (now ? *now + 1 : 0) : n;
+  for (std::size_t r = shown; r < n; ++r) {
+    series[r] = NAN;
+    if (r < exact.size()) exact[r] = NAN;
+  }
   double lo = INFINITY, hi = -INFINITY;
   auto extend = [&](const std::vector<double>& v) {
     for (double x : v)
       if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
   };
   extend(series);
-  if (!diff) extend(exact_);
+  if (!diff) extend(exact);
   if (diff) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
   if (!(hi > lo)) lo = (std::isfinite(lo) ? lo : 0) - 1, hi = lo + 2;
   x0_ = origin.x + 64, x1_ = end.x - 12;
@@ -133,7 +138,7 @@ CanvasEvents PlotCanvas::draw_inside(const CanvasInput& in, ImVec2 size) {
       if (mn <= mx) dl->AddLine(ImVec2(x0_ + float(x), sy(mx)), ImVec2(x0_ + float(x), sy(mn) + 1), col, 1.f);
     }
   };
-  if (!diff && !exact_.empty()) plot(exact_, kPlotExact);
+  if (!diff && !exact.empty()) plot(exact, kPlotExact);
   plot(series, kPlotValue);
   // The current row.
   const auto row = table_.row_of(in.step);
@@ -149,13 +154,15 @@ CanvasEvents PlotCanvas::draw_inside(const CanvasInput& in, ImVec2 size) {
   std::snprintf(buf, sizeof buf, "%.4g", lo);
   dl->AddText(ImVec2(origin.x + 4, bottom - 14), theme::kLabel, buf);
   if (row) {
-    std::snprintf(buf, sizeof buf, "row %zu of %zu (step %u): %.9g", *row, n, table_.rows[*row], series[*row]);
+    if (in.hide_future) std::snprintf(buf, sizeof buf, "row %zu (step %u): %.9g", *row, table_.rows[*row], series[*row]);
+    else std::snprintf(buf, sizeof buf, "row %zu of %zu (step %u): %.9g", *row, n, table_.rows[*row], series[*row]);
     dl->AddText(ImVec2(x0_, bottom + 4), kPlotCurrent, buf);
   }
   // Hover and click: the row under the mouse.
   const ImGuiIO& io = ImGui::GetIO();
   const float mx = io.MousePos.x;
-  if ((ImGui::IsItemHovered() || ImGui::IsItemDeactivated()) && mx >= x0_ && mx < x1_) {
+  if ((ImGui::IsItemHovered() || ImGui::IsItemDeactivated()) && mx >= x0_ && mx < x1_ &&
+      std::min(n - 1, std::size_t((mx - x0_) / (x1_ - x0_) * float(n))) < shown) {
     const std::size_t r = std::min(n - 1, std::size_t((mx - x0_) / (x1_ - x0_) * float(n)));
     if (ImGui::IsItemDeactivated()) ev.jump_to = table_.rows[r];
     if (ImGui::IsItemHovered()) {

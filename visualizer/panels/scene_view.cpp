@@ -93,19 +93,20 @@ CanvasEvents SceneCanvas::draw(const CanvasInput& in, ImVec2 size) {
   img0_ = ImVec2(origin.x + (aw - w) / 2, origin.y + (ah - h) / 2), img1_ = ImVec2(img0_.x + w, img0_.y + h);
   ImGui::SetCursorScreenPos(img0_);
   ImGui::InvisibleButton("##scene-image", ImVec2(std::max(w, 1.f), std::max(h, 1.f)));
-  if (tex_) dl->AddImage(tex_, img0_, img1_);
+  if (in.hide_sweep) sweep_hidden_note(dl, origin);
+  else if (tex_) dl->AddImage(tex_, img0_, img1_);
   if (!error_.empty()) dl->AddText(ImVec2(origin.x + 10, origin.y + 10), theme::kNegative, error_.c_str());
   const Json& input = in.model->input();
   const std::string_view pick = in.model->algorithm().picture.pick;
   const Json::json_pointer at{std::string(pick.empty() ? "/" : pick)};
   const Json picked = !pick.empty() && input.is_object() && input.contains(at) ? input[at] : Json();
-  if (picked.is_array() && picked.size() == 2 && picked[0].is_number_integer() && picked[1].is_number_integer() &&
-      picture_.width > 0) {
+  const bool shown = picture_.width > 0 && !in.hide_sweep;
+  if (picked.is_array() && picked.size() == 2 && picked[0].is_number_integer() && picked[1].is_number_integer() && shown) {
     const auto r = pixel_rect(picked[0].get<std::int64_t>(), picked[1].get<std::int64_t>());  // the picked pixel, framed
     dl->AddRect(ImVec2(r[0] - 2, r[1] - 2), ImVec2(r[2] + 2, r[3] + 2), IM_COL32(0, 0, 0, 255), 0, 0, 3.f);
     dl->AddRect(ImVec2(r[0] - 1, r[1] - 1), ImVec2(r[2] + 1, r[3] + 1), theme::kCurrentPixel, 0, 0, 1.5f);
   }
-  if (ImGui::IsItemHovered() && picture_.width > 0) {
+  if (ImGui::IsItemHovered() && shown) {
     const ImVec2 mp = ImGui::GetIO().MousePos;
     const std::int64_t pi =
         std::clamp<std::int64_t>(std::int64_t((mp.x - img0_.x) / w * float(picture_.width)), 0, picture_.width - 1);
@@ -126,10 +127,10 @@ CanvasEvents SceneCanvas::draw(const CanvasInput& in, ImVec2 size) {
                 picture_.seconds);
   std::snprintf(lines[1], sizeof lines[1], "one sample through each pixel's centre");
   std::snprintf(lines[2], sizeof lines[2], "click a pixel: its history");
-  status_plate(dl, ImVec2(origin.x + 4, origin.y + 4), lines, !error_.empty());
+  if (!in.hide_sweep) status_plate(dl, ImVec2(origin.x + 4, origin.y + 4), lines, !error_.empty());
   ImGui::SetCursorScreenPos(ImVec2(end.x - side, origin.y));
   ImGui::BeginChild("##scene-side", ImVec2(side, size.y), false);
-  draw_side(*in.model, in.step, ev);
+  draw_side(*in.model, in, ev);
   ImGui::EndChild();
   ImGui::SetCursorScreenPos(origin);
   ImGui::Dummy(size);
@@ -137,8 +138,12 @@ CanvasEvents SceneCanvas::draw(const CanvasInput& in, ImVec2 size) {
   return ev;
 }
 
-void SceneCanvas::draw_side(const TraceModel& m, std::size_t step, CanvasEvents& ev) {
-  if (const Json* c = read_result(m, result_reads::scene_colour); c && c->is_array() && c->size() == 3) {
+void SceneCanvas::draw_side(const TraceModel& m, const CanvasInput& in, CanvasEvents& ev) {
+  // Quiz mode: the result waits for the last step, the planner's notes for the quiz's end, and
+  // the summary shows the rows begun so far.
+  const std::size_t step = in.step;
+  const bool ended = !in.hide_future || step >= m.last();
+  if (const Json* c = ended ? read_result(m, result_reads::scene_colour) : nullptr; c && c->is_array() && c->size() == 3) {
     const std::array<double, 3> rgb{(*c)[0].get<double>(), (*c)[1].get<double>(), (*c)[2].get<double>()};
     ImGui::TextUnformatted("The pixel's colour:");
     ImGui::SameLine();
@@ -146,7 +151,7 @@ void SceneCanvas::draw_side(const TraceModel& m, std::size_t step, CanvasEvents&
     std::snprintf(text, sizeof text, "%.3f %.3f %.3f", rgb[0], rgb[1], rgb[2]);
     colour_cell(rgb, text);
   }
-  if (!picture_.notes_title.empty() && ImGui::CollapsingHeader(picture_.notes_title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (!picture_.notes_title.empty() && !in.hide_sweep && ImGui::CollapsingHeader(picture_.notes_title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
     for (const Picture::Note& n : picture_.notes) {
       if (n.on) ImGui::PushStyleColor(ImGuiCol_Text, *n.on ? theme::kPositive : theme::kZero);
       ImGui::TextWrapped("%s", n.text.c_str());
@@ -172,6 +177,7 @@ void SceneCanvas::draw_side(const TraceModel& m, std::size_t step, CanvasEvents&
   for (std::size_t k = 0; k < t.rows.size(); ++k) {
     const SummaryTable::Row& row = t.rows[k];
     const bool later = row.step > step;
+    if (later && in.hide_future) continue;
     ImGui::TableNextRow();
     if (int(k) == current) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(90, 80, 30, 255));
     if (later) ImGui::PushStyleColor(ImGuiCol_Text, theme::kDim);
@@ -187,7 +193,7 @@ void SceneCanvas::draw_side(const TraceModel& m, std::size_t step, CanvasEvents&
     }
     if (later) ImGui::PopStyleColor();
   }
-  if (t.total) {
+  if (t.total && ended) {
     ImGui::TableNextRow();
     for (std::size_t c = 0; c < t.columns.size(); ++c) {
       ImGui::TableNextColumn();

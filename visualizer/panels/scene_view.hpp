@@ -33,7 +33,7 @@ class SceneCanvas final : public Canvas {
 
  private:
   void refresh(const TraceModel& m);
-  void draw_side(const TraceModel& m, std::size_t step, CanvasEvents& ev);
+  void draw_side(const TraceModel& m, const CanvasInput& in, CanvasEvents& ev);
 
   TextureHost* host_;
   ImTextureID tex_ = nullptr;

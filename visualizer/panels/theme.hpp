@@ -68,6 +68,10 @@ inline void corner_label(ImDrawList* dl, ImVec2 origin, ImVec2 size, const char*
   dl->AddRectFilled(ImVec2(p.x - 4, p.y - 2), ImVec2(p.x + ts.x + 4, p.y + ts.y + 2), IM_COL32(0, 0, 0, 170), 3);
   dl->AddText(p, IM_COL32(255, 255, 255, 255), label);
 }
+// Quiz mode's stand-in for a whole-sweep picture, which would answer its questions.
+inline void sweep_hidden_note(ImDrawList* dl, ImVec2 origin) {
+  dl->AddText(ImVec2(origin.x + 10, origin.y + 10), theme::kLabel, "Quiz: this view shows every input at once, so it waits until every question is answered.");
+}
 // A sweep view's status plate at `at`: three lines on a dark plate, the first red when `bad` (the
 // mode disagrees, or the sweep failed) and green otherwise, the others grey.
 inline void status_plate(ImDrawList* dl, ImVec2 at, const char (&lines)[3][200], bool bad) {

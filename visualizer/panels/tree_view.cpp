@@ -29,12 +29,12 @@ struct IdIndex {
 
 }  // namespace
 
-TreeDiagram build_tree_diagram(const TraceModel& m) {
+TreeDiagram build_tree_diagram(const TraceModel& m, std::size_t through) {
   TreeDiagram d;
   const TraceView& t = m.trace();
   IdIndex index;
   std::vector<std::int64_t> parent_id;
-  for (std::size_t s = 0; s < t.size(); ++s) {
+  for (std::size_t s = 0; s < t.size() && s <= through; ++s) {
     const StepRecord& st = t.at(s);
     for (std::uint32_t g = st.geo_begin; g < st.geo_end; ++g) {
       const GeoRecord& geo = t.geo_at(g);
@@ -127,7 +127,14 @@ std::optional<std::array<float, 2>> TreeCanvas::node_centre(std::size_t node) co
 CanvasEvents TreeCanvas::draw(const CanvasInput& in, ImVec2 size) {
   CanvasEvents ev;
   if (!in.model) return ev;
-  if (in.model != model_) model_ = in.model, diagram_ = build_tree_diagram(*model_), fit_pending_ = true;
+  // Quiz mode lays out the tree built so far, refitted as it grows; otherwise the whole tree, once.
+  const std::size_t through = in.hide_future ? in.step : SIZE_MAX;
+  if (in.model != model_ || through != through_) {
+    const std::size_t before = diagram_.nodes.size();
+    const bool fresh = in.model != model_;
+    model_ = in.model, through_ = through, diagram_ = build_tree_diagram(*model_, through);
+    if (fresh || diagram_.nodes.size() != before) fit_pending_ = true;
+  }
   const TreeDiagram& d = diagram_;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   origin_ = {origin.x, origin.y}, size_ = {size.x, size.y};
@@ -188,7 +195,7 @@ CanvasEvents TreeCanvas::draw(const CanvasInput& in, ImVec2 size) {
     if (p.x < origin.x - r || p.x > origin.x + size.x + r || p.y < origin.y - r || p.y > origin.y + size.y + r) continue;
     drawn_[i] = {p.x, p.y};
     const ImU32 fill = mark[i] == 3 ? theme::kCurrentPixel : mark[i] == 2 ? theme::kHandleP0 : mark[i] == 1 ? theme::kQ
-                       : n.children.empty() ? theme::kCentre : theme::kGridAxis;
+                       : n.children.empty() && !in.hide_future ? theme::kCentre : theme::kGridAxis;  // quiz: no leaf yet
     if (r < 3 && !mark[i]) dl->AddRectFilled(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), fill);  // thousands: cheap squares
     else dl->AddCircleFilled(p, std::max(r, 3.f), fill, 16);
     if (n.first_step == in.step) dl->AddCircle(p, r + 3, theme::kHandleP1, 16, 2);
@@ -202,14 +209,17 @@ CanvasEvents TreeCanvas::draw(const CanvasInput& in, ImVec2 size) {
   if (hover_node) {
     const auto& n = d.nodes[*hover_node];
     ImGui::SetTooltip("node %lld%s, depth %d, created at step %u\nclick: go to that step", static_cast<long long>(n.id),
-                      n.children.empty() ? " (leaf)" : "", int(n.y), n.first_step);
+                      n.children.empty() && !in.hide_future ? " (leaf)" : "", int(n.y), n.first_step);
     const ImGuiIO& io = ImGui::GetIO();
     const bool dragged = io.MouseDragMaxDistanceSqr[0] > io.MouseDragThreshold * io.MouseDragThreshold;
     if (ImGui::IsMouseReleased(ImGuiMouseButton_Left) && !dragged) ev.jump_to = n.first_step;
   }
   char legend[160];
-  std::snprintf(legend, sizeof legend, "%zu of %zu nodes built; depth %d%s", marks.built, d.nodes.size(), d.depth,
-                marks.stack.empty() ? "" : "; green: on the stack");
+  if (in.hide_future)  // the quiz's diagram holds only the nodes built so far
+    std::snprintf(legend, sizeof legend, "%zu nodes built so far%s", marks.built, marks.stack.empty() ? "" : "; green: on the stack");
+  else
+    std::snprintf(legend, sizeof legend, "%zu of %zu nodes built; depth %d%s", marks.built, d.nodes.size(), d.depth,
+                  marks.stack.empty() ? "" : "; green: on the stack");
   dl->AddText(ImVec2(origin.x + 8, origin.y + size.y - ImGui::GetFontSize() - 5), theme::kLabel, d.nodes.empty() ? "this trace records no tree nodes" : legend);
   corner_label(dl, origin, size, in.label);
   dl->PopClipRect();

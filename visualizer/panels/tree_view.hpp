@@ -5,6 +5,7 @@
 // step that created it. Drag to pan, wheel to zoom.
 #pragma once
 #include <cstdint>
+#include <cstddef>
 #include <optional>
 #include <vector>
 #include "panels/canvas.hpp"
@@ -26,9 +27,10 @@ struct TreeDiagram {
 };
 
 // The diagram of every node the trace records at any depth (a query sees the tree its nested build
-// records; a node recorded again keeps its first step).
+// records; a node recorded again keeps its first step), in steps up to `through` (all by default:
+// quiz mode lays out only the tree built so far, whose shape must not tell what comes).
 // Leaves take consecutive slots; a parent sits over the middle of its children.
-TreeDiagram build_tree_diagram(const TraceModel& m);
+TreeDiagram build_tree_diagram(const TraceModel& m, std::size_t through = SIZE_MAX);
 
 // What the view marks at a step: the nodes its own geometry names, the stack variable's nodes and
 // the path from the root to the first current node (indices into TreeDiagram::nodes).
@@ -51,6 +53,7 @@ class TreeCanvas final : public Canvas {
 
  private:
   std::shared_ptr<const TraceModel> model_;
+  std::size_t through_ = SIZE_MAX;  // the last step the diagram holds
   TreeDiagram diagram_;
   // screen = origin + pan + (scale * x, row * y): a wide tree fits by narrowing its slots, not its rows.
   float scale_ = 40, row_ = 64, pan_x_ = 0, pan_y_ = 0;
