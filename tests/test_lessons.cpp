@@ -118,6 +118,18 @@ TEST_CASE("lessons: the lint fails each broken lesson with the problem it holds"
   CHECK(files >= 10);
 }
 
+TEST_CASE("lessons: the lint reports a broken template once, with how many more steps it fails at", "[lesson]") {
+  const auto problems = lint_lesson(sw::testing::kSourceDir / "tests/cases/lessons-broken/unknown-template.md");
+  std::size_t mentions = 0;
+  for (const auto& p : problems)
+    if (p.find("{nosuch}") != std::string::npos) {
+      ++mentions;
+      // dda-line from (0, 0) to (5, 2) plots the columns 0 to 4: the first plot step and 4 more.
+      CHECK(p.find("(and at 4 more steps)") != std::string::npos);
+    }
+  CHECK(mentions == 1);
+}
+
 TEST_CASE("lessons: quiz answers are graded against the exact trace", "[lesson][quiz]") {
   SECTION("pixel: the DDA's next pixel") {
     // p0 = (1.25, 2.5), p1 = (12.75, 7.25): slope 4.75/11.5; at x = 2, y = 2.8098 -> (2, 3); at x = 3,

@@ -37,10 +37,12 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   alg->needs(input);
   r->add_option("--numeric", o.numeric, "Number type (default: the lesson's, else double)");
   r->add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
-  r->add_option("--step", o.step, "The step to show (default: the lesson's step, else the last)")->check(CLI::Validator(budget_count_error, "STEP"));
+  auto* step = r->add_option("--step", o.step, "The step to show (default: the lesson's step, else the last)")->check(CLI::Validator(budget_count_error, "STEP"));
+  auto* shot = r->add_flag("--shot", o.shot, "The lesson's screenshot step (its front matter's screenshot:, else its step)")->needs(lesson)->excludes(step);
   auto* out = r->add_option("--out", o.out, "PNG file to write");
   auto* gif = r->add_option("--gif", o.gif, "Animated GIF to write: one frame per step");
   out->excludes(gif);
+  shot->excludes(gif);
   r->add_option("--from", o.from, "First step of the GIF (default 0)")->needs(gif)->check(CLI::Validator(budget_count_error, "STEP"));
   r->add_option("--to", o.to, "Last step of the GIF, inclusive (default: the last step)")->needs(gif)->check(CLI::Validator(budget_count_error, "STEP"));
   r->add_option("--delay", o.delay_ms, "Milliseconds per GIF frame")->check(CLI::Range(10, 10000))->needs(gif);
@@ -103,7 +105,10 @@ int run_render(const RenderOptions& o) {
   };
 
   if (!o.out.empty()) {
-    const std::size_t step = o.step ? *o.step : lesson && lesson->start_step ? lesson->start_step : last;
+    const std::size_t step = o.step                                    ? *o.step
+                             : lesson && o.shot && lesson->screenshot_step ? *lesson->screenshot_step
+                             : lesson && lesson->start_step              ? lesson->start_step
+                                                                         : last;
     check_step(step, "--step");
     session.set_step(step);
     if (o.focus) app.jump_and_focus(step);

@@ -21,7 +21,7 @@ struct RenderOptions {
   std::string lesson, algorithm, input, numeric, compare, out, gif, size = "1280x800", view;
   std::optional<std::size_t> step, from, to;
   int delay_ms = 250;
-  bool focus = false, present = false;
+  bool focus = false, present = false, shot = false;  // shot: the lesson's screenshot step
   double scale = 1;  // the UI scale, theme::kMinScale to theme::kMaxScale
   std::uint64_t max_steps = Budget{}.max_steps;  // the work budget (trace_io.hpp)
   std::uint64_t max_pixels = kDefaultGifPixels;  // a GIF's frames x width x height

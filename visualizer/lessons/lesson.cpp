@@ -163,8 +163,8 @@ void add_front_matter(Lesson& lesson, const std::string& key, const std::string&
   if (key == "title") lesson.title = value;
   else if (key == "view" && (value == "fit" || value == "step")) lesson.focus = value == "step";
   else if (key == "view") throw InputError("'view: " + value + "': expected fit or step");
-  else if (key != "algorithm" && key != "input" && key != "numeric" && key != "compare" && key != "step" && key != "show")
-    throw InputError("unknown front-matter key '" + key + "' (title, algorithm, input, numeric, compare, step, view, show)");
+  else if (key != "algorithm" && key != "input" && key != "numeric" && key != "compare" && key != "step" && key != "show" && key != "screenshot")
+    throw InputError("unknown front-matter key '" + key + "' (title, algorithm, input, numeric, compare, step, view, show, screenshot)");
 }
 
 }  // namespace
@@ -230,6 +230,10 @@ Lesson parse_lesson(const std::string& raw, const std::string& where) {
     if (fm.count("step")) {
       at = lesson.start_step_line = fm["step"].second;
       lesson.start_step = parse_count(fm["step"].first, "step:");
+    }
+    if (fm.count("screenshot")) {
+      at = lesson.screenshot_line = fm["screenshot"].second;
+      lesson.screenshot_step = parse_count(fm["screenshot"].first, "screenshot:");
     }
   } catch (const InputError& e) {
     throw fail(at, e.what());

@@ -52,6 +52,8 @@ struct Lesson {
   std::optional<Run> run, compare_run;
   std::size_t start_step = 0;      // where the timeline starts
   std::size_t start_step_line = 0;
+  std::optional<std::size_t> screenshot_step;  // "screenshot: N": the step lessons/screenshots.sh shows (else start_step)
+  std::size_t screenshot_line = 0;
   bool focus = false;              // "view: step": zoom in on the start step, not the whole trace
   std::optional<View> show;        // "show: tree": the declared view to open on (default: the first)
   std::string intro;               // Markdown, always shown above the step's narration

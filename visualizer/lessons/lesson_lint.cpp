@@ -27,10 +27,18 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
     return {e.what()};
   }
   std::vector<std::string> out;
-  std::set<std::string> said;
+  // A broken template or condition is reported once, at its first step, with how many more steps
+  // it fails at: "template '{x}': ..." is keyed on its line and "template '{x}'".
+  std::map<std::string, std::pair<std::size_t, std::size_t>> said;  // key -> (index in out, repeats)
   auto at = [&](std::size_t line, const std::string& msg) {
-    std::string m = path.string() + ":" + std::to_string(line) + ": " + msg;
-    if (said.insert(m).second) out.push_back(std::move(m));
+    const auto quote = msg.find("': ");
+    const std::string key = std::to_string(line) + ":" + (quote == std::string::npos ? msg : msg.substr(0, quote));
+    if (auto it = said.find(key); it != said.end()) {
+      ++it->second.second;
+      return;
+    }
+    said.emplace(key, std::pair{out.size(), std::size_t{0}});
+    out.push_back(path.string() + ":" + std::to_string(line) + ": " + msg);
   };
   if (has_template(lesson.intro)) at(1, "the intro is shown at every step, so it cannot hold {templates}");
 
@@ -46,6 +54,8 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
   }
   if (lesson.start_step > runs[0]->last())
     at(lesson.start_step_line + 1, "step " + std::to_string(lesson.start_step) + " is past the last step (" + std::to_string(runs[0]->last()) + ")");
+  if (lesson.screenshot_step && *lesson.screenshot_step > runs[0]->last())
+    at(lesson.screenshot_line + 1, "screenshot " + std::to_string(*lesson.screenshot_step) + " is past the last step (" + std::to_string(runs[0]->last()) + ")");
 
   const auto& secs = lesson.sections;
   std::vector<bool> shown(secs.size()), matched(secs.size());
@@ -89,6 +99,8 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
     else if (matched[k]) at(secs[k].source_line, what + "a more specific section wins wherever it applies");
     else at(secs[k].source_line, what + "no step of " + (secs[k].quiz ? "the quiz run" : "any run") + " has its key" + (secs[k].conditions.empty() ? "" : " with its conditions true"));
   }
+  for (const auto& [key, where] : said)
+    if (where.second) out[where.first] += " (and at " + std::to_string(where.second) + " more step" + (where.second == 1 ? ")" : "s)");
   return out;
 }
 
