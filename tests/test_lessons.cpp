@@ -2,6 +2,8 @@
 // and quizzes graded against the exact trace.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <regex>
+#include <set>
 #include <fstream>
 #include "lessons/lesson.hpp"
 #include "lessons/quiz.hpp"
@@ -116,6 +118,59 @@ TEST_CASE("lessons: the lint fails each broken lesson with the problem it holds"
     ++files;
   }
   CHECK(files >= 10);
+}
+
+TEST_CASE("lessons: the shading and ray-tracing lessons narrate every call's entry and every decision", "[lesson]") {
+  // Where a student stops: the first step of each nested call, and each decide, hit or miss step.
+  for (const char* name : {"19-gouraud-phong.md", "20-minnaert-moon.md", "21-fresnel-grazing.md", "22-phong-blinn.md",
+                           "23-shadow-acne.md", "24-glass-tir.md", "25-planner-skips.md"}) {
+    const Lesson l = load_lesson(kLessons / name);
+    const auto m = run_of(l, l.numeric);
+    const TraceView& t = m->trace();
+    std::set<std::string> silent;  // "listing/line kind"
+    std::size_t stops = 0;
+    for (std::size_t s = 0; s < t.size(); ++s) {
+      const StepRecord& st = t.at(s);
+      const bool entry = st.scope != 0 && (s == 0 || t.at(s - 1).scope != st.scope);
+      const bool decision = st.kind == StepKind::decide || st.kind == StepKind::hit || st.kind == StepKind::miss;
+      if (!entry && !decision) continue;
+      ++stops;
+      if (narrate(l, *m, s).empty())
+        silent.insert((st.scope ? std::string(t.scope_id(st.scope)) : std::string(l.algorithm->id)) + " line " + std::to_string(st.line) +
+                      " " + std::string(kind_name(st.kind)));
+    }
+    INFO(name << ": " << stops << " stops");
+    for (const auto& s : silent) UNSCOPED_INFO("silent at " << s);
+    CHECK(silent.empty());
+  }
+}
+
+TEST_CASE("lessons: narration quotes a float run's numbers rounded, never 17 digits", "[lesson]") {
+  // A decimal of more than 9 significant digits that a template put in a float or double run's
+  // narration lacks a digit count ({t:4}); exact runs quote their fractions as they are.
+  const std::regex long_decimal(R"((\d[\d]*\.\d+|\d+\.\d*)(e[-+]?\d+)?)");
+  for (const auto& file : lesson_manifest(kLessons)) {
+    const Lesson l = load_lesson(file);
+    std::vector<std::shared_ptr<const TraceModel>> runs;
+    runs.push_back(record_model(*l.run));
+    if (l.compare_run) runs.push_back(record_model(*l.compare_run));
+    for (const auto& m : runs) {
+      if (m->numeric() != Numeric::f32 && m->numeric() != Numeric::f64) continue;
+      for (std::size_t s = 0; s < m->size(); ++s) {
+        const Narration* n = l.section_for(*m, s);
+        if (!n) continue;
+        const std::string text = narrate(l, *m, s);
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), long_decimal); it != std::sregex_iterator(); ++it) {
+          if (n->text.find(it->str()) != std::string::npos) continue;  // the author's own digits, not a template's
+          std::string digits = (*it)[1].str();
+          digits.erase(std::remove(digits.begin(), digits.end(), '.'), digits.end());
+          digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
+          INFO(file.filename().string() << " (" << numeric_name(m->numeric()) << ") step " << s << ": " << it->str());
+          CHECK(digits.size() <= 9);
+        }
+      }
+    }
+  }
 }
 
 TEST_CASE("lessons: the lint reports a broken template once, with how many more steps it fails at", "[lesson]") {

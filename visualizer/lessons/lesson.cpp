@@ -65,9 +65,9 @@ std::vector<Condition> parse_conditions(const std::string& text) {
   }
 }
 
-std::string listing_names(const Algorithm& alg) {
+std::string listing_names(const Listing& listing) {
   std::string names;
-  for (const ListingLine& l : alg.listing.lines) names += (names.empty() ? "" : ", ") + std::string(l.name);
+  for (const ListingLine& l : listing.lines) names += (names.empty() ? "" : ", ") + std::string(l.name);
   return names;
 }
 
@@ -125,16 +125,21 @@ Narration parse_heading(const std::string& heading, const Lesson& lesson) {
     else if (!parse_numeric(n.run)) throw InputError("'for " + n.run + "': expected a number type or the compared algorithm's id");
   }
   if (what == "line" && value.find('/') != std::string::npos) {
-    // A line of a nested listing, named by the callee's id: "ray-triangle-mt/u".
-    const Algorithm& callee = find_algorithm(value.substr(0, value.find('/')));
-    const std::string name = value.substr(value.find('/') + 1);
-    n.key = Narration::Key::line, n.callee = callee.id;
-    n.line = callee.listing.find(name);
-    if (n.line == 0) throw InputError("'" + name + "' is not a listing line name of " + std::string(callee.id) + " (" + listing_names(callee) + ")");
+    // A line of a nested listing, named by the callee's id: "ray-triangle-mt/u", "refract/tir".
+    const std::string id = value.substr(0, value.find('/')), name = value.substr(value.find('/') + 1);
+    const Listing* callee = find_listing(id);
+    if (!callee) {
+      std::string known;
+      for (std::string_view k : listing_ids()) known += (known.empty() ? "" : ", ") + std::string(k);
+      throw InputError("unknown algorithm or callee '" + id + "' (known: " + known + ")");
+    }
+    n.key = Narration::Key::line, n.callee = id;
+    n.line = callee->find(name);
+    if (n.line == 0) throw InputError("'" + name + "' is not a listing line name of " + id + " (" + listing_names(*callee) + ")");
   } else if (what == "line") {
     n.key = Narration::Key::line;
     n.line = alg->listing.find(value);  // by name, so that inserting a listing line never shifts a lesson
-    if (n.line == 0) throw InputError("'" + value + "' is not a listing line name of " + std::string(alg->id) + " (" + listing_names(*alg) + ")");
+    if (n.line == 0) throw InputError("'" + value + "' is not a listing line name of " + std::string(alg->id) + " (" + listing_names(alg->listing) + ")");
   } else if (what == "kind") {
     auto k = parse_kind(value);
     if (!k) throw InputError("unknown step kind '" + value + "' (init, decide, advance, plot, visit, hit, miss, done)");
@@ -163,8 +168,45 @@ void add_front_matter(Lesson& lesson, const std::string& key, const std::string&
   if (key == "title") lesson.title = value;
   else if (key == "view" && (value == "fit" || value == "step")) lesson.focus = value == "step";
   else if (key == "view") throw InputError("'view: " + value + "': expected fit or step");
-  else if (key != "algorithm" && key != "input" && key != "numeric" && key != "compare" && key != "step" && key != "show" && key != "screenshot")
-    throw InputError("unknown front-matter key '" + key + "' (title, algorithm, input, numeric, compare, step, view, show, screenshot)");
+  else if (key != "algorithm" && key != "input" && key != "numeric" && key != "compare" && key != "step" && key != "show" && key != "screenshot" &&
+           key != "include")
+    throw InputError("unknown front-matter key '" + key + "' (title, algorithm, input, numeric, compare, step, view, show, screenshot, include)");
+}
+
+// The '## ' sections of lines[from..] into lesson.sections; text before the first goes to *intro,
+// which an included file (intro == nullptr: only '## on ...' sections) must not have.
+template <class Fail>
+void parse_sections(const std::vector<std::string>& lines, std::size_t from, Lesson& lesson, std::string* intro, std::set<std::string>& headings,
+                    const std::filesystem::path& source, const Fail& fail) {
+  std::string spill;  // an included file's text outside any section
+  std::string* body = intro ? intro : &spill;
+  bool in_code = false;
+  for (std::size_t i = from; i < lines.size(); ++i) {
+    const std::string& l = lines[i];
+    if (trim(l).rfind("```", 0) == 0) in_code = !in_code;
+    if (!in_code && l.rfind("## ", 0) == 0) {
+      Narration n;
+      try {
+        n = parse_heading(trim(std::string_view(l).substr(3)), lesson);
+      } catch (const InputError& e) {
+        throw fail(i, e.what());
+      }
+      if (!intro && (n.quiz || n.key == Narration::Key::intro)) throw fail(i, "an included file holds only '## on ...' sections");
+      if (!headings.insert(n.heading).second) throw fail(i, "section '## " + n.heading + "' appears twice");
+      n.source_line = i + 1, n.source = source;
+      if (n.key == Narration::Key::intro) {
+        body = intro;
+        continue;
+      }
+      lesson.sections.push_back(std::move(n));
+      body = &lesson.sections.back().text;
+      continue;
+    }
+    if (!in_code && intro && l.rfind("# ", 0) == 0 && lesson.sections.empty() && trim(*intro).empty() && !looks_like_section(l)) continue;  // a top title
+    if (!in_code && looks_like_section(l)) throw fail(i, "'" + trim(l) + "' looks like a section heading; sections are '## on ...', '## quiz ...' or '## intro'");
+    if (body == &spill && !trim(l).empty() && l.rfind("# ", 0) != 0) throw fail(i, "an included file holds only '## on ...' sections, with no text before the first");
+    *body += l + '\n';
+  }
 }
 
 }  // namespace
@@ -239,33 +281,24 @@ Lesson parse_lesson(const std::string& raw, const std::string& where) {
     throw fail(at, e.what());
   }
   if (lesson.title.empty()) lesson.title = std::string(lesson.algorithm->listing.title);
-  // The body: text before the first '## ' heading is the intro; '## ' headings open sections.
-  std::string* body = &lesson.intro;
-  bool in_code = false;
   std::set<std::string> headings;
-  for (++i; i < lines.size(); ++i) {
-    const std::string& l = lines[i];
-    if (trim(l).rfind("```", 0) == 0) in_code = !in_code;
-    if (!in_code && l.rfind("## ", 0) == 0) {
-      Narration n;
+  parse_sections(lines, i + 1, lesson, &lesson.intro, headings, {}, fail);
+  // The included files' sections come after the lesson's own, which therefore win a tie.
+  if (fm.count("include")) {
+    std::stringstream list(fm["include"].first);
+    for (std::string name; std::getline(list, name, ',');) {
+      const std::filesystem::path file = std::filesystem::path(where).parent_path() / trim(name);
+      std::string text;
       try {
-        n = parse_heading(trim(std::string_view(l).substr(3)), lesson);
+        text = read_file_bounded(file.string(), "included narration", kMaxLessonBytes);
       } catch (const InputError& e) {
-        throw fail(i, e.what());
+        throw fail(fm["include"].second, e.what());
       }
-      if (!headings.insert(n.heading).second) throw fail(i, "section '## " + n.heading + "' appears twice");
-      n.source_line = i + 1;
-      if (n.key == Narration::Key::intro) {
-        body = &lesson.intro;
-        continue;
-      }
-      lesson.sections.push_back(std::move(n));
-      body = &lesson.sections.back().text;
-      continue;
+      const auto included = split_lines(text);
+      auto fail_in = [&](std::size_t line, const std::string& msg) { return InputError(file.string() + ":" + std::to_string(line + 1) + ": " + msg); };
+      parse_sections(included, 0, lesson, nullptr, headings, file, fail_in);
+      lesson.includes.push_back(file);
     }
-    if (!in_code && l.rfind("# ", 0) == 0 && lesson.sections.empty() && trim(lesson.intro).empty() && !looks_like_section(l)) continue;  // a top title
-    if (!in_code && looks_like_section(l)) throw fail(i, "'" + trim(l) + "' looks like a section heading; sections are '## on ...', '## quiz ...' or '## intro'");
-    *body += l + '\n';
   }
   lesson.intro = trim(lesson.intro);
   for (Narration& n : lesson.sections) n.text = trim(n.text);

@@ -33,7 +33,8 @@ struct Narration {
   std::string run;                 // "for X": only the run of number type or algorithm X
   std::vector<Condition> conditions;
   std::string heading;             // as written, for messages
-  std::size_t source_line = 0;     // 1-based line of the heading in the file
+  std::size_t source_line = 0;     // 1-based line of the heading in its file
+  std::filesystem::path source;    // an included file's path; empty: the lesson itself
   std::string text;                // Markdown body, {templates} unfilled
   std::optional<QuizType> quiz;    // "## quiz ...": a question, its body the explanation
   std::string quiz_var;            // QuizType::sign and flag: the variable ("e", "c.r", "l[2]")
@@ -57,7 +58,10 @@ struct Lesson {
   bool focus = false;              // "view: step": zoom in on the start step, not the whole trace
   std::optional<View> show;        // "show: tree": the declared view to open on (default: the first)
   std::string intro;               // Markdown, always shown above the step's narration
-  std::vector<Narration> sections; // narration and quiz sections in file order
+  std::vector<Narration> sections; // narration and quiz sections in file order, then the included ones
+  // "include: calls/ray-tracer.md": shared narration of the nested calls, relative to the lesson's
+  // directory; a lesson's own section wins over an included one with the same key.
+  std::vector<std::filesystem::path> includes;
 
   // The narration section `run` shows at `step` (the most specific that matches); nullptr if none.
   const Narration* section_for(const TraceModel& run, std::size_t step) const;

@@ -30,15 +30,16 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
   // A broken template or condition is reported once, at its first step, with how many more steps
   // it fails at: "template '{x}': ..." is keyed on its line and "template '{x}'".
   std::map<std::string, std::pair<std::size_t, std::size_t>> said;  // key -> (index in out, repeats)
-  auto at = [&](std::size_t line, const std::string& msg) {
+  auto at = [&](std::size_t line, const std::string& msg, const std::filesystem::path& file = {}) {
+    const std::string where = (file.empty() ? path : file).string() + ":" + std::to_string(line);
     const auto quote = msg.find("': ");
-    const std::string key = std::to_string(line) + ":" + (quote == std::string::npos ? msg : msg.substr(0, quote));
+    const std::string key = where + ":" + (quote == std::string::npos ? msg : msg.substr(0, quote));
     if (auto it = said.find(key); it != said.end()) {
       ++it->second.second;
       return;
     }
     said.emplace(key, std::pair{out.size(), std::size_t{0}});
-    out.push_back(path.string() + ":" + std::to_string(line) + ": " + msg);
+    out.push_back(where + ": " + msg);
   };
   if (has_template(lesson.intro)) at(1, "the intro is shown at every step, so it cannot hold {templates}");
 
@@ -74,12 +75,12 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
       for (std::size_t k = 0; k < secs.size(); ++k) {
         std::vector<std::string> problems;
         if (section_matches(secs[k], lesson, run, s, &problems)) matched[k] = true;
-        for (const std::string& p : problems) at(secs[k].source_line, p);
+        for (const std::string& p : problems) at(secs[k].source_line, p, secs[k].source);
       }
       if (narrated)
         if (const Narration* n = lesson.section_for(run, s)) {
           shown[n - secs.data()] = true;
-          for (const std::string& p : fill_templates(n->text, run, s).problems) at(n->source_line, p);
+          for (const std::string& p : fill_templates(n->text, run, s).problems) at(n->source_line, p, n->source);
         }
       if (const Narration* n = quiz_run ? lesson.quiz_for(run, s) : nullptr) {
         std::string why;
@@ -93,7 +94,7 @@ std::vector<std::string> lint_lesson(const std::filesystem::path& path, const Bu
     }
   }
   for (std::size_t k = 0; k < secs.size(); ++k) {
-    if (shown[k]) continue;
+    if (shown[k] || !secs[k].source.empty()) continue;  // a shared file's section need not fit every lesson
     const std::string what = "section '## " + secs[k].heading + "' is shown at no step: ";
     if (secs[k].quiz && unasked.count(&secs[k])) at(secs[k].source_line, what + "nothing follows to predict (" + unasked[&secs[k]] + ")");
     else if (matched[k]) at(secs[k].source_line, what + "a more specific section wins wherever it applies");

@@ -1,6 +1,7 @@
 // Which section a run shows at a step, and its {templates} filled from the recorded values
 // (docs/lessons.md). Conditions compare exactly: an exact run's values as rationals, a float run's
 // values as the exact rationals of its doubles.
+#include <charconv>
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
@@ -70,8 +71,13 @@ int format_digits(const std::string& format) {
 // or rounded to the format's significant digits (an integer stays whole).
 std::string component_text(const TraceModel& run, const VarRecord& v, std::uint32_t k, const std::string& format) {
   const TraceView& t = run.trace();
-  const std::string text = v.is_int ? std::to_string(t.int_value(v.slot + k)) : t.num_text(v.slot + k);
+  std::string text = v.is_int ? std::to_string(t.int_value(v.slot + k)) : t.num_text(v.slot + k);
   const double d = t.component_double(v, k);
+  // A float's own shortest digits (the trace writes the double it widens to, up to 17 digits).
+  if (!v.is_int && run.numeric() == Numeric::f32 && std::isfinite(d) && double(float(d)) == d) {
+    char buf[32];
+    text.assign(buf, std::to_chars(buf, buf + sizeof buf, float(d)).ptr);
+  }
   if (const int digits = format_digits(format); digits && !v.is_int) return decimal(d, digits);
   if (format == "exact" || text.find('/') == std::string::npos) return text;
   return text + " \xE2\x89\x88 " + decimal(d);
