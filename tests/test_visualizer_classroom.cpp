@@ -7,12 +7,14 @@
 #include <imgui_internal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include "headless/headless.hpp"
 #include "panels/orbit_canvas.hpp"
+#include "source_paths.hpp"
 
 using namespace sw;
 using namespace sw::vis;
@@ -125,6 +127,35 @@ TEST_CASE("visualizer classroom: every lesson's key step text is in view on open
       CHECK(app.narration_marks().text_y + 2 * ImGui::GetFontSize() <= r.bottom());
     }
   }
+}
+
+TEST_CASE("visualizer classroom: a step scrolls the State panel to the first variable it sets", "[visualizer][classroom]") {
+  HeadlessHost host(1024, 640);
+  App& app = host.app();
+  Session& s = app.session();
+  REQUIRE(s.open_lesson(sw::testing::kLessons / "16-kd-sah.md"));
+  // The State table scrolls inside a child of the State window; its scroll, and whether the step's
+  // first set variable (below the fold at step 65, the fifth of a long list) lies inside it.
+  auto table = []() -> const ImGuiWindow* {
+    const ImGuiWindow* state = ImGui::FindWindowByName("State");
+    for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows)
+      if (w->ParentWindow == state && w != state) return w;
+    return nullptr;
+  };
+  s.go(65);
+  host.render(3);
+  const ImGuiWindow* w = table();
+  REQUIRE(w);
+  CHECK(w->Scroll.y > 0);
+  const auto vars = s.model(0)->state_at(65);
+  const auto first = std::find_if(vars.begin(), vars.end(), [](const VarState& v) { return v.set_here; });
+  REQUIRE(first != vars.end());
+  CHECK(first - vars.begin() >= 4);  // it would be hidden without the scroll
+  // A step that sets the first rows scrolls back to the top.
+  s.go(0);
+  host.render(3);
+  REQUIRE(table());
+  CHECK(table()->Scroll.y == 0);
 }
 
 TEST_CASE("visualizer classroom: the Lesson menu lists titles in manifest order, Ctrl+Right and Ctrl+Left move along it",

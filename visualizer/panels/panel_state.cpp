@@ -42,6 +42,25 @@ void compare_cell(const VarState& v) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.text.c_str());
 }
 
+// Each new step scrolls the table once to the first variable set there, so what the step did is
+// in view in a short panel; the reader's own scrolling stands until the step changes.
+class ScrollToStep {
+ public:
+  ScrollToStep(std::size_t step) : store_(ImGui::GetStateStorage()), key_(ImGui::GetID("##scrolled-step")) {
+    fresh_ = store_->GetInt(key_, -1) != int(step);
+    store_->SetInt(key_, int(step));
+  }
+  // Call on each row; scrolls to the first one set at the step.
+  void row(bool set_here) {
+    if (fresh_ && set_here) ImGui::SetScrollHereY(0.2f), fresh_ = false;
+  }
+
+ private:
+  ImGuiStorage* store_;
+  ImGuiID key_;
+  bool fresh_ = false;
+};
+
 }  // namespace
 
 void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
@@ -64,6 +83,7 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
   ImGui::TextDisabled("earlier");
   constexpr ImGuiTableFlags kTable = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp |
                                      ImGuiTableFlags_ScrollY;
+  ScrollToStep scroll(step);
   if (!b) {
     if (ImGui::BeginTable("vars", 2, kTable)) {
       ImGui::TableSetupScrollFreeze(0, 1);
@@ -72,6 +92,7 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
       ImGui::TableHeadersRow();
       for (const VarState& v : sa) {
         ImGui::TableNextRow();
+        scroll.row(v.set_here);
         ImGui::TableNextColumn();
         ImGui::TextColored(var_colour(v), "%.*s", int(v.name.size()), v.name.data());
         ImGui::TableNextColumn();
@@ -100,6 +121,7 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
       const VarState *x = find_var(sa, name), *y = find_var(sb, name);
       if (!x && !y) continue;
       ImGui::TableNextRow();
+      scroll.row((x && x->set_here) || (y && y->set_here));
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(name.data(), name.data() + name.size());
       ImGui::TableNextColumn();
