@@ -58,15 +58,19 @@ double marker_y(const std::string& svg, const std::string& cls) {
   return std::stod(m[2]);
 }
 
+// `stepwise bench ARGS --plot x.svg` (in a scratch folder named `name`): the SVG it wrote.
+std::string bench_svg(const std::string& name, const std::string& args) {
+  const auto out = scratch(name) / "chart.svg";
+  const auto r = run_stepwise("bench " + args + " --plot " + sh_quote(out.string()));
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return slurp(out);
+}
+
 }  // namespace
 
 TEST_CASE("visualizer chart: bench --plot writes an SVG with one marker per mode and labelled axes", "[visualizer][chart]") {
-  const auto dir = scratch("plot-svg");
-  const auto out = dir / "dda.svg";
-  const auto r = run_stepwise("bench dda-line --repeats 1 --set random --plot " + sh_quote(out.string()));
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const std::string svg = slurp(out);
+  const std::string svg = bench_svg("plot-svg", "dda-line --repeats 1 --set random");
   CHECK(svg.rfind("<?xml", 0) == 0);
   CHECK(unbalanced_tags(svg).empty());
   CHECK(count(svg, "<svg ") == 1);
@@ -133,12 +137,7 @@ TEST_CASE("visualizer chart: every axis and label names its unit, and the judge 
 }
 
 TEST_CASE("visualizer chart: bench --plot of a reference-only algorithm says reference, with the error's unit", "[visualizer][chart]") {
-  const auto dir = scratch("plot-ref");
-  const auto out = dir / "uv.svg";
-  const auto r = run_stepwise("bench sphere-uv --repeats 1 --set random --plot " + sh_quote(out.string()));
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const std::string svg = slurp(out);
+  const std::string svg = bench_svg("plot-ref", "sphere-uv --repeats 1 --set random");
   CHECK_THAT(svg, Catch::Contains("cases differing from reference (%)") && Catch::Contains("the 300-bit MPFR reference"));
   CHECK_THAT(svg, !Catch::Contains("from exact"));
   CHECK(std::regex_search(svg, std::regex("max error [0-9.e+-]+ ulps<")));  // float's label, at least
