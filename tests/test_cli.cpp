@@ -224,6 +224,18 @@ TEST_CASE("cli: bench writes no progress off a terminal", "[cli][bench]") {
   CHECK_THAT(r.out, Catch::StartsWith("bresenham-line: "));
 }
 
+TEST_CASE("cli: bench draws its progress line on a terminal and clears it", "[cli][bench]") {
+  // script(1) (bsdutils, essential in Debian) gives the command a terminal and copies what it shows.
+  const auto dir = sw::testing::scratch("tty");
+  const std::string inner = sh_quote(SW_STEPWISE_EXE) + " bench bresenham-line --repeats 1 --set random >/dev/null";
+  const std::string cmd = "script -qec " + sh_quote(inner) + " /dev/null >" + sh_quote((dir / "tty").string()) + " 2>&1 </dev/null";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string shown = sw::testing::slurp(dir / "tty");
+  CHECK_THAT(shown, Catch::StartsWith("\rbench bresenham-line: set random, "));  // the first report is always drawn
+  CHECK_THAT(shown, Catch::EndsWith("\r\x1b[K"));                               // and the line is cleared at the end
+  CHECK(shown.find('\n') == std::string::npos);
+}
+
 TEST_CASE("cli: the bench progress line names algorithm, mode, set and cases", "[cli][bench]") {
   const std::string timing = bench_progress_text("dda-line", {"long", Numeric::f32, false, 128, 192});
   CHECK(timing == "bench dda-line: set long, float: 128/192 case runs");
