@@ -150,7 +150,7 @@ void bench_mode(const std::vector<typename Spec::Input>& inputs, const std::vect
   const std::size_t runs = std::size_t(std::max(options.repeats, 1)) * inputs.size();
   double best = 1e300, spent = 0;
   for (int r = 0; r < options.repeats; ++r) {
-    // Quick (a cut set): no further repeat once the mode has had its time budget.
+    // Quick (max_cases set): no further repeat once the mode has had its time budget.
     if (r > 0 && options.max_cases != 0 && spent > kQuickRepeatSeconds) break;
     if (options.progress) options.progress({row.set, row.numeric, false, std::size_t(r) * inputs.size(), runs});  // between timed loops
     row.fallbacks = row.later_stage = 0;
