@@ -1,10 +1,13 @@
 // The `stepwise` command: list, trace, run, check, bench. Other tools drive these forms, so keep
 // them stable (docs/cli.md). Bad input: one line on stderr, exit 2, no partial output file.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include "bench_text.hpp"
 #include "catalog.hpp"
 #include "data_root.hpp"
 #include "scene_command.hpp"  // `stepwise scene check`
@@ -14,6 +17,7 @@
 #include "headless/bench_plot.hpp"      // visualizer/: `stepwise bench --plot`
 #include "headless/lesson_command.hpp"  // visualizer/: `stepwise lesson export|lint`
 #include "headless/quiz_command.hpp"    // visualizer/: `stepwise quiz`
+#include "panels/chart.hpp"             // visualizer/: the chart's note
 #include "headless/render_command.hpp"  // visualizer/: `stepwise render`
 #endif
 
@@ -41,25 +45,62 @@ void add_budget_options(CLI::App* cmd, Budget& b) {
   cmd->add_option("--max-output", b.max_output, "Stop and write nothing past this many bytes (default 1073741824)")->check(CLI::Validator(budget_count_error, "COUNT"));
 }
 
-void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, bool json) {
-  if (json) {
+void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, int repeats, bool quick, bool json) {
+  if (json) {  // units: docs/cli.md
     for (const BenchRow& r : rows)
       std::cout << Json{{"algorithm", alg.id}, {"set", r.set}, {"numeric", numeric_name(r.numeric)}, {"ns_per_op", r.ns_per_op},
-                        {"mismatches", r.mismatches}, {"cases", r.cases}, {"ops", r.ops}, {"fallbacks", r.fallbacks}, {"later_stage", r.later_stage},
-                        {"max_error", r.max_error}}.dump()
+                        {"mismatches", r.mismatches}, {"cases", r.cases}, {"full_cases", r.full_cases}, {"ops", r.ops}, {"fallbacks", r.fallbacks},
+                        {"later_stage", r.later_stage}, {"max_error", r.max_error}, {"max_error_unit", r.error_unit}, {"compared_with", judge_name(r.judge)}}
+                       .dump()
                 << '\n';
     return;
   }
-  std::printf("%s: ns per output unit (best of repeats), cases differing from exact\n", std::string(alg.id).c_str());
-  std::printf("%-8s %-9s %8s %10s %10s %8s %10s %8s %10s\n", "set", "numeric", "cases", "ops", "ns/op", "x double", "mismatch", "stage 2", "fallback");
+  const BenchSummary sum = bench_summary(rows, quick);
+  std::printf("%s: %s, %s; outputs compared with %s; %s\n", std::string(alg.id).c_str(), std::string(kBenchTimeLabel).c_str(),
+              repeats_text(repeats, quick).c_str(), std::string(judge_text(sum.judge)).c_str(), sum.cases.c_str());
+  const std::string differs = mismatch_label(sum.judge), error = error_label(sum.error_unit);
+  const int wd = int(differs.size()), we = int(error.size());
+  std::printf("%-8s %-9s %8s %10s %12s %8s %*s %15s %16s%s%*s\n", "set", "numeric", "cases", "ops", "ns/op (ns)", "x double", wd, differs.c_str(),
+              "stage 2 (cases)", "fallback (cases)", we ? " " : "", we, error.c_str());
   for (const BenchRow& r : rows) {
     double base = 0;
     for (const BenchRow& b : rows)
       if (b.set == r.set && b.numeric == Numeric::f64) base = b.ns_per_op;
-    std::printf("%-8s %-9s %8zu %10zu %10.2f %8.2f %10zu %8zu %10zu\n", r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(),
-                r.cases, r.ops, r.ns_per_op, base > 0 ? r.ns_per_op / base : 0.0, r.mismatches, r.later_stage, r.fallbacks);
+    std::printf("%-8s %-9s %8zu %10zu %12.2f %8.2f %*zu %15zu %16zu", r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(), r.cases, r.ops,
+                r.ns_per_op, base > 0 ? r.ns_per_op / base : 0.0, wd, r.mismatches, r.later_stage, r.fallbacks);
+    if (we) std::printf(" %*.3g", we, r.max_error);
+    std::printf("\n");
   }
 }
+
+// The live progress line of `bench` on a terminal (standard error), redrawn at most every 100 ms
+// and cleared when the bench ends, however it ends. Off the terminal it writes nothing.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string_view alg) : alg_(alg), on_(::isatty(STDERR_FILENO) == 1) {}
+  ~ProgressLine() {
+    if (drawn_) std::fputs("\r\x1b[K", stderr), std::fflush(stderr);
+  }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+  // The callback for BenchOptions::progress; empty off a terminal.
+  std::function<void(const BenchProgress&)> callback() {
+    if (!on_) return {};
+    return [this](const BenchProgress& p) { show(p); };
+  }
+
+ private:
+  void show(const BenchProgress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (drawn_ && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now, drawn_ = true;
+    std::fprintf(stderr, "\r%s\x1b[K", bench_progress_text(alg_, p).c_str());
+    std::fflush(stderr);
+  }
+  std::string_view alg_;
+  bool on_, drawn_ = false;
+  std::chrono::steady_clock::time_point last_;
+};
 
 }  // namespace
 
@@ -78,7 +119,7 @@ static int run_command(int argc, char** argv) {
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
 
   std::string alg_id, input_arg, numeric = "double", out_path, inputs_path, trace_path;
-  bool decisions_only = false, results_only = false, json = false;
+  bool decisions_only = false, results_only = false, json = false, bench_full = false;
   int repeats = 3;
   Budget budget;
   std::vector<std::string> bench_numerics;
@@ -110,6 +151,7 @@ static int run_command(int argc, char** argv) {
   bench->add_option("--numeric", bench_numerics, "Only these modes (repeatable)");
   auto* set_opt = bench->add_option("--set", bench_set, "Only this input set (e.g. random, long)");
   bench->add_option("--repeats", repeats, "Timed repeats; the best is reported")->check(CLI::Range(1, 100));
+  bench->add_flag("--full", bench_full, "Every case of each set (default: at most " + std::to_string(BenchOptions::kQuickCases) + " a set, evenly spaced)");
   auto* plot_opt = bench->add_option("--plot", bench_plot, "Also draw the results as a chart: FILE.png or FILE.svg");
   bench->add_option("--plot-size", bench_plot_size, "The chart's size WxH (default 1280x720)");
 
@@ -215,14 +257,16 @@ static int run_command(int argc, char** argv) {
         for (const auto& m : bench_numerics) modes.push_back(parse_numeric_for(alg, m));
       }
       std::vector<BenchRow> rows;
-      for (Numeric m : modes)
-        for (BenchRow& r : alg.bench(m, repeats, bench_set)) rows.push_back(r);
+      {
+        ProgressLine progress(alg.id);
+        rows = alg.bench(modes, {.repeats = repeats, .only_set = bench_set, .max_cases = bench_full ? 0 : BenchOptions::kQuickCases, .progress = progress.callback()});
+      }
       if (rows.empty()) throw InputError("no bench set named '" + bench_set + "'");
       std::stable_sort(rows.begin(), rows.end(), [](const BenchRow& a, const BenchRow& b) { return a.set < b.set; });
-      print_bench(alg, rows, json);
+      print_bench(alg, rows, repeats, !bench_full, json);
 #ifdef SW_HAVE_RENDER
       if (!bench_plot.empty()) {
-        sw::vis::write_bench_plot(bench_plot, alg.id, rows, plot_size, (repeats == 1 ? std::string("one run") : "best of " + std::to_string(repeats) + " repeats") + " per mode; y: cases whose output differs from exact");
+        sw::vis::write_bench_plot(bench_plot, alg.id, rows, plot_size, sw::vis::bench_chart_note(rows, repeats, !bench_full));
         std::cerr << "stepwise: wrote chart to " << bench_plot << '\n';
       }
 #endif

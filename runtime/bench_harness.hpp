@@ -1,10 +1,13 @@
-// The bench harness: a Spec's seeded input sets run untraced in one numeric mode, timed, and
-// compared with exact (`stepwise bench`, BenchRow in catalog.hpp). Filtered mode's later stages
-// and exact rationals run where the first stage is uncertain, inside the timing.
+// The bench harness: a Spec's seeded input sets (each cut to BenchOptions::max_cases) run untraced
+// in each numeric mode asked, timed, and compared with the judge's outputs: exact rationals, or
+// the 300-bit reference where the Spec has no exact mode (`stepwise bench`, BenchRow in
+// catalog.hpp). Filtered mode's later stages and exact rationals run where the first stage is
+// uncertain, inside the timing.
 #pragma once
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <span>
 #include <tuple>
 #include <type_traits>
 #include "modes.hpp"
@@ -100,45 +103,109 @@ template <class Spec, class Num>
   for (std::size_t i = 0; i < prepared.size(); ++i) bench_one<Spec, Num>(prepared[i], later, i, outs[i], row);
 }
 
-template <class Spec> std::vector<BenchRow> bench_spec(Numeric n, int repeats, const std::string& only_set) {
+// What a Spec's bench compares with: exact rationals, else the 300-bit reference (whose compute
+// runs on Rational too), else double itself.
+template <class Spec> constexpr Numeric bench_judge() {
+  return spec_has<Spec>(Numeric::exact) ? Numeric::exact : spec_has<Spec>(Numeric::reference) ? Numeric::reference : Numeric::f64;
+}
+
+// At most max_cases of `inputs` (0: all), evenly spaced through them, in their order.
+template <class Input> std::vector<Input> bench_cases(std::vector<Input>&& inputs, std::size_t max_cases) {
+  if (max_cases == 0 || inputs.size() <= max_cases) return std::move(inputs);
+  std::vector<Input> out;
+  out.reserve(max_cases);
+  for (std::size_t k = 0; k < max_cases; ++k) out.push_back(std::move(inputs[k * inputs.size() / max_cases]));
+  return out;
+}
+
+// Quick benches stop repeating a mode once its repeats have taken this long (at least one runs).
+inline constexpr double kQuickRepeatSeconds = 0.5;
+
+// Quick benches compute the judge's outputs of a set for at most this long (at least one case).
+inline constexpr double kQuickJudgeSeconds = 0.5;
+
+// 0..k-1 in an order whose every prefix is spread evenly through them (bit-reversed indices), so
+// that a set cut short by time keeps cases from its whole length.
+inline std::vector<std::size_t> spread_order(std::size_t k) {
+  std::size_t bits = 0;
+  while ((std::size_t{1} << bits) < k) ++bits;
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < (std::size_t{1} << bits); ++i) {
+    std::size_t r = 0;
+    for (std::size_t b = 0; b < bits; ++b) r |= ((i >> b) & 1u) << (bits - 1 - b);
+    if (r < k) out.push_back(r);
+  }
+  return out;
+}
+
+// One mode on one set's cases, timed (best of the repeats) and compared with the judge's outputs.
+template <class Spec, class Num>
+void bench_mode(const std::vector<typename Spec::Input>& inputs, const std::vector<typename Spec::Output>& judged, const BenchOptions& options,
+                BenchRow& row) {
   using Output = typename Spec::Output;
+  std::vector<decltype(Spec::template prepare<Num>(inputs[0]))> prepared;
+  for (const auto& in : inputs) prepared.push_back(Spec::template prepare<Num>(in));
+  std::vector<Output> outs(prepared.size());
+  const LaterInputs<Spec> later(inputs, is_filtered<Num>);
+  const std::size_t runs = std::size_t(std::max(options.repeats, 1)) * inputs.size();
+  double best = 1e300, spent = 0;
+  for (int r = 0; r < options.repeats; ++r) {
+    // Quick (max_cases set): no further repeat once the mode has had its time budget.
+    if (r > 0 && options.max_cases != 0 && spent > kQuickRepeatSeconds) break;
+    if (options.progress) options.progress({row.set, row.numeric, false, std::size_t(r) * inputs.size(), runs});  // between timed loops
+    row.fallbacks = row.later_stage = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    bench_all<Spec, Num>(prepared, later, outs, row);
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    best = std::min(best, took), spent += took;
+  }
+  for (std::size_t i = 0; i < outs.size(); ++i) {
+    row.ops += Spec::ops(outs[i]);
+    if (!(outs[i] == judged[i])) ++row.mismatches;
+    if constexpr (names_hook<Spec>(Hook::error)) row.max_error = std::max(row.max_error, Spec::error(outs[i], judged[i]));
+  }
+  row.ns_per_op = best * 1e9 / static_cast<double>(std::max<std::size_t>(row.ops, 1));
+}
+
+// Every mode of `modes` on each set: the sets are made, and the judge's outputs computed, once
+// for all the modes.
+template <class Spec> std::vector<BenchRow> bench_spec(std::span<const Numeric> modes, const BenchOptions& options) {
+  using Output = typename Spec::Output;
+  for (Numeric n : modes) with_number_type<Spec>(n, [](auto) { return 0; });  // a mode it lacks: refused before any work
   std::vector<BenchRow> rows;
-  for (const auto& set : Spec::bench_sets()) {
-    if (!only_set.empty() && set.name != only_set) continue;
-    if constexpr (names_hook<Spec>(Hook::bench_runs))
-      if (!Spec::bench_runs(set.name, n)) continue;
-    BenchRow row;
-    row.set = set.name;
-    row.numeric = n;
-    row.cases = set.inputs.size();
-    std::vector<Output> exact;
-    for (const auto& in : set.inputs) {
+  for (auto& set : make_bench_sets<Spec>(options.max_cases == 0 ? BenchSize::full : BenchSize::quick)) {
+    if (!options.only_set.empty() && set.name != options.only_set) continue;
+    const std::size_t full_cases = set.inputs.size();
+    std::vector<typename Spec::Input> inputs = bench_cases(std::move(set.inputs), options.max_cases);
+    // The judge's outputs, in spread order; quick: only as many as kQuickJudgeSeconds allow (at
+    // least one). Then back in the set's order.
+    const bool quick = options.max_cases != 0;
+    std::vector<std::pair<std::size_t, Output>> taken;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (std::size_t i : spread_order(inputs.size())) {
+      if (quick && !taken.empty() && std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > kQuickJudgeSeconds) break;
+      if (options.progress) options.progress({set.name, bench_judge<Spec>(), true, taken.size(), inputs.size()});
       NoProbe none;
-      exact.push_back(Spec::template compute<Rational>(Spec::template prepare<Rational>(in), none));
+      taken.emplace_back(i, Spec::template compute<Rational>(Spec::template prepare<Rational>(inputs[i]), none));
     }
-    with_number_type<Spec>(n, [&](auto t) {
-      using Num = typename decltype(t)::type;
-      std::vector<decltype(Spec::template prepare<Num>(set.inputs[0]))> prepared;
-      for (const auto& in : set.inputs) prepared.push_back(Spec::template prepare<Num>(in));
-      std::vector<Output> outs(prepared.size());
-      const LaterInputs<Spec> later(set.inputs, is_filtered<Num>);
-      double best = 1e300;
-      for (int r = 0; r < repeats; ++r) {
-        row.fallbacks = row.later_stage = 0;
-        const auto t0 = std::chrono::steady_clock::now();
-        bench_all<Spec, Num>(prepared, later, outs, row);
-        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      }
-      for (std::size_t i = 0; i < outs.size(); ++i) {
-        row.ops += Spec::ops(outs[i]);
-        if (!(outs[i] == exact[i])) ++row.mismatches;
-        if constexpr (names_hook<Spec>(Hook::error))
-          row.max_error = std::max(row.max_error, Spec::error(outs[i], exact[i]));
-      }
-      row.ns_per_op = best * 1e9 / static_cast<double>(std::max<std::size_t>(row.ops, 1));
-      return 0;
-    });
-    rows.push_back(row);
+    std::sort(taken.begin(), taken.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<typename Spec::Input> kept;
+    std::vector<Output> judged;
+    for (auto& [i, out] : taken) kept.push_back(std::move(inputs[i])), judged.push_back(std::move(out));
+    inputs = std::move(kept);
+    for (Numeric n : modes) {
+      if constexpr (names_hook<Spec>(Hook::bench_runs))
+        if (!Spec::bench_runs(set.name, n)) continue;
+      BenchRow row;
+      row.set = set.name;
+      row.numeric = n;
+      row.cases = inputs.size();
+      row.full_cases = full_cases;
+      row.judge = bench_judge<Spec>();
+      if constexpr (names_hook<Spec>(Hook::error)) row.error_unit = Spec::error_unit;
+      if (!inputs.empty()) with_number_type<Spec>(n, [&](auto t) { return bench_mode<Spec, typename decltype(t)::type>(inputs, judged, options, row), 0; });
+      rows.push_back(row);
+    }
   }
   return rows;
 }

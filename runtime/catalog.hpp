@@ -2,7 +2,9 @@
 // visualizer, the tests and the benchmarks. Each Spec registers itself in its own file with one
 // SW_REGISTER line (register.hpp); its family is the folder it is registered in (runtime/<family>/).
 #pragma once
+#include <functional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,11 +22,35 @@ struct BenchRow {
   std::string set;
   Numeric numeric = Numeric::f64;
   std::size_t cases = 0, ops = 0;       // ops: output units (pixels, tests), for ns per op
+  std::size_t full_cases = 0;           // the set's cases under --full (cases is fewer when capped)
   double ns_per_op = 0;                 // best of the repeats
-  std::size_t mismatches = 0;           // cases whose output differs from exact
+  std::size_t mismatches = 0;           // cases whose output differs from the judge's
   std::size_t fallbacks = 0;            // filtered mode: cases that needed the exact re-run
   std::size_t later_stage = 0;          // filtered mode: cases a later (slower) filter stage decided
-  double max_error = 0;                 // family-defined (e.g. t error in ulps), 0 if none
+  double max_error = 0;                 // in error_unit (e.g. t error in ulps), 0 if none
+  std::string_view error_unit;          // the Spec's error_unit ("ulps", "pixels"); empty: no error measure
+  // What the outputs are compared with: exact rationals, else the 300-bit MPFR reference (a Spec
+  // whose arithmetic has no exact form), else double itself (a Spec that runs in double only).
+  Numeric judge = Numeric::exact;
+};
+
+// Where a bench is: computing the judge's outputs for a set, or timing one mode on it.
+struct BenchProgress {
+  std::string_view set;
+  Numeric numeric = Numeric::f64;  // the mode timed, or the judge while `judging`
+  bool judging = false;
+  std::size_t done = 0, total = 0;  // case runs, over every repeat when timing
+};
+
+// How much a bench runs. The one knob for its size is max_cases: each set is cut to at most that
+// many cases, evenly spaced through the set (its easy and hard cases alike); 0 runs every case.
+struct BenchOptions {
+  static constexpr std::size_t kQuickCases = 64;  // the default (`bench` without --full)
+  int repeats = 3;
+  std::string only_set;                           // "": every set
+  std::size_t max_cases = kQuickCases;
+  // Called between runs (never inside a timed loop) when set: the CLI's progress line.
+  std::function<void(const BenchProgress&)> progress;
 };
 
 // An input value the user may drag or type on a view: a JSON pointer into the input, what it is,
@@ -52,7 +78,7 @@ struct Algorithm;
 struct SpecFunctions {
   std::shared_ptr<const OpenInput> (*open)(const Algorithm&, const Json&);
   Json (*canonical)(Json result);
-  std::vector<BenchRow> (*bench)(Numeric, int repeats, const std::string& only_set);
+  std::vector<BenchRow> (*bench)(std::span<const Numeric> modes, const BenchOptions&);
   std::vector<std::string> (*bench_sets)();
   std::size_t (*step_cost)(Numeric);
 };
@@ -89,9 +115,9 @@ struct Algorithm {
 
   // A result in the form the oracle states it (sorted, for results the oracle gives as a set).
   Json canonical(Json result) const { return fn.canonical(std::move(result)); }
-  // Times the untraced algorithm on its seeded bench sets (or only_set, if not empty), against
-  // the exact mode.
-  std::vector<BenchRow> bench(Numeric n, int repeats, const std::string& only_set) const { return fn.bench(n, repeats, only_set); }
+  // Times the untraced algorithm in each of `modes` on its seeded bench sets (or options.only_set),
+  // against its judge (BenchRow::judge): rows set by set, modes in the order given.
+  std::vector<BenchRow> bench(std::span<const Numeric> modes, const BenchOptions& options) const { return fn.bench(modes, options); }
   // The names of those sets, in order (makes the seeded inputs: call it off the UI thread).
   std::vector<std::string> bench_sets() const { return fn.bench_sets(); }
   // What one step costs against the work budget in mode n (measured, docs/cli.md): 1 for most.

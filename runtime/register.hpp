@@ -195,7 +195,7 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
   a.fn.bench = &bench_spec<Spec>;
   a.fn.bench_sets = [] {
     std::vector<std::string> names;
-    for (const auto& set : Spec::bench_sets()) names.push_back(set.name);
+    for (const auto& set : make_bench_sets<Spec>(BenchSize::full)) names.push_back(set.name);
     return names;
   };
   a.fn.step_cost = [](Numeric n) -> std::size_t {

@@ -10,7 +10,7 @@
 //   static Json to_json(const Output&);
 //   static std::size_t ops(const Output&);                   // output units, for ns per op
 //   static Output oracle(const Input&);                      // independent exact result
-//   static std::vector<BenchSet<Input>> bench_sets();        // seeded
+//   static std::vector<BenchSet<Input>> bench_sets();        // seeded (or bench_sets(BenchSize))
 // Its family is the folder its file registers it in (SW_REGISTER). Besides these, a Spec may
 // define optional hooks; it names the ones it defines in
 //   static constexpr std::array hooks{Hook::handles, Hook::error, ...};
@@ -35,7 +35,7 @@ enum class Hook : std::uint8_t {
   step_cost,       // static std::size_t step_cost(Numeric): work-budget units one step costs in that mode
   write_members,   // static void write_members(const Output&, std::ostream&)
   canonical,       // static Json canonical(const Json& result)
-  error,           // static double error(const Output& got, const Output& exact)
+  error,           // static double error(const Output& got, const Output& exact), with static constexpr std::string_view error_unit
   bench_runs,      // static bool bench_runs(const std::string& set, Numeric)
   table_lines,     // static constexpr std::array table_lines{"name"sv, ...}
   sweeper,         // template <class Num> static auto sweeper(const Input&, const SweepGrid&), with sweep_value
@@ -73,7 +73,7 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::step_cost: return requires(Numeric n) { { S::step_cost(n) } -> std::convertible_to<std::size_t>; };
     case Hook::write_members: return requires(const Out& o, std::ostream& os) { S::write_members(o, os); };
     case Hook::canonical: return requires(const Json& r) { { S::canonical(r) } -> std::convertible_to<Json>; };
-    case Hook::error: return requires(const Out& o) { { S::error(o, o) } -> std::convertible_to<double>; };
+    case Hook::error: return requires(const Out& o) { { S::error(o, o) } -> std::convertible_to<double>; { S::error_unit } -> std::convertible_to<std::string_view>; };
     case Hook::bench_runs: return requires(const std::string& set, Numeric n) { { S::bench_runs(set, n) } -> std::convertible_to<bool>; };
     case Hook::table_lines: return requires { S::table_lines; };
     case Hook::sweeper:
@@ -112,6 +112,17 @@ template <class S> constexpr std::size_t hook_mismatch() {
   return kHookCount;
 }
 
+// What a bench asks of a Spec's set generator: quick (the default) or full (`bench --full`, the
+// sets as documented). The harness cuts every set to BenchOptions::max_cases itself; a generator
+// whose single cases are long takes this as `bench_sets(BenchSize)` and shortens them when quick
+// (the lines' long set: 4 lines of 4 million pixels each, 65 thousand when quick).
+enum class BenchSize : std::uint8_t { quick, full };
+
+template <class S> auto make_bench_sets(BenchSize size) {
+  if constexpr (requires { S::bench_sets(size); }) return S::bench_sets(size);
+  else return (void)size, S::bench_sets();
+}
+
 template <class S>
 concept AlgorithmSpec = requires {
   typename S::Algo;
@@ -122,8 +133,7 @@ concept AlgorithmSpec = requires {
   S::views.size();
   S::numerics.size();
   { S::example } -> std::convertible_to<std::string>;
-  S::bench_sets();
-} && requires(const Json& j, const typename S::Input& in, const typename S::Output& o) {
+} && (requires { S::bench_sets(); } || requires { S::bench_sets(BenchSize::full); }) && requires(const Json& j, const typename S::Input& in, const typename S::Output& o) {
   { S::parse(j) } -> std::same_as<typename S::Input>;
   { S::to_json(o) } -> std::convertible_to<Json>;
   { S::ops(o) } -> std::convertible_to<std::size_t>;

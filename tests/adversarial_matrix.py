@@ -852,6 +852,8 @@ def bench_cases(M, algs):
                        ("--repeats abc", ["bench", aid, "--set", "random", "--repeats", "abc"]),
                        ("an unknown --numeric mode", ["bench", aid, "--numeric", "quad"] + quick),
                        ("an empty --set", ["bench", aid, "--set", "", "--repeats", "1"]),
+                       ("--full given a value", ["bench", aid, "--full=maybe"] + quick),
+                       ("--full with an unknown --set", ["bench", aid, "--full", "--set", "zz-no-such-set", "--repeats", "1"]),
                        ("an unknown option", ["bench", aid, "--zz-bogus"] + quick)]:
         M.add("bench", None if "algorithm" in name else aid, name, lambda o, i, args=args: (args, {}))
     for name, plot, size in [("--plot FILE.txt", "p.txt", None), ("--plot without an extension", "p", None),

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include "bench_harness.hpp"
+#include "bench_text.hpp"
 #include "cli_harness.hpp"
 #include "input.hpp"
 
@@ -174,6 +176,99 @@ TEST_CASE("cli: bench --json prints one object per mode and set", "[cli]") {
     CHECK(row.contains("mismatches"));
     if (row["numeric"] == "int") CHECK(row["mismatches"] == 0);
   }
+}
+
+TEST_CASE("cli: bench --full runs every case, the default at most kQuickCases a set", "[cli][bench]") {
+  const std::string args = "bench bresenham-line --json --numeric int --repeats 1 --set random";
+  const auto quick = run_stepwise(args), full = run_stepwise(args + " --full");
+  REQUIRE(quick.status == 0);
+  REQUIRE(full.status == 0);
+  const auto q = json_lines(quick.out), f = json_lines(full.out);
+  REQUIRE(q.size() == 1);
+  REQUIRE(f.size() == 1);
+  const auto quick_cases = q[0]["cases"].get<std::size_t>(), full_cases = f[0]["cases"].get<std::size_t>();
+  CHECK(quick_cases == BenchOptions::kQuickCases);
+  CHECK(full_cases > quick_cases);
+  CHECK(q[0]["full_cases"] == full_cases);  // the default says what it left out
+  CHECK(f[0]["full_cases"] == full_cases);
+  CHECK(q[0]["compared_with"] == "exact");
+}
+
+TEST_CASE("cli: bench names its units and the judge it compared with, exact or reference", "[cli][bench]") {
+  struct Case {
+    const char *alg, *judge, *not_judge, *unit;
+  };
+  // ray-sphere-stable has exact rationals; camera-ray has no exact mode: its judge is the 300-bit reference.
+  for (const Case& c : {Case{"ray-sphere-stable", "exact", "reference", "ulps of t"}, Case{"camera-ray", "reference", "exact", "ulps"}}) {
+    INFO(c.alg);
+    const auto text = run_stepwise(std::string("bench ") + c.alg + " --repeats 1 --numeric float --numeric double --set random");
+    REQUIRE(text.status == 0);
+    CHECK_THAT(text.out, Catch::Contains("time per output unit (ns)") && Catch::Contains("ns/op (ns)"));
+    CHECK_THAT(text.out, Catch::Contains(std::string("differs from ") + c.judge + " (cases)"));
+    CHECK_THAT(text.out, Catch::Contains(std::string("max error (") + c.unit + ")"));
+    CHECK_THAT(text.out, !Catch::Contains(std::string("from ") + c.not_judge));
+    const auto json = run_stepwise(std::string("bench ") + c.alg + " --json --repeats 1 --numeric float --set random");
+    REQUIRE(json.status == 0);
+    const auto rows = json_lines(json.out);
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0]["compared_with"] == c.judge);
+    CHECK(rows[0]["max_error_unit"] == c.unit);
+    CHECK(rows[0].contains("max_error"));  // the keys of before stay
+  }
+}
+
+TEST_CASE("cli: bench writes no progress off a terminal", "[cli][bench]") {
+  const auto r = run_stepwise("bench bresenham-line --repeats 1 --set random");  // stderr is a file here
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  CHECK_THAT(r.out, Catch::StartsWith("bresenham-line: "));
+}
+
+TEST_CASE("cli: bench draws its progress line on a terminal and clears it", "[cli][bench]") {
+  // script(1) (bsdutils, essential in Debian) gives the command a terminal and copies what it shows.
+  const auto dir = sw::testing::scratch("tty");
+  const std::string inner = sh_quote(SW_STEPWISE_EXE) + " bench bresenham-line --repeats 1 --set random >/dev/null";
+  const std::string cmd = "script -qec " + sh_quote(inner) + " /dev/null >" + sh_quote((dir / "tty").string()) + " 2>&1 </dev/null";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string shown = sw::testing::slurp(dir / "tty");
+  CHECK_THAT(shown, Catch::StartsWith("\rbench bresenham-line: set random, "));  // the first report is always drawn
+  CHECK_THAT(shown, Catch::EndsWith("\r\x1b[K"));                               // and the line is cleared at the end
+  CHECK(shown.find('\n') == std::string::npos);
+}
+
+TEST_CASE("cli: the bench progress line names algorithm, mode, set and cases", "[cli][bench]") {
+  const std::string timing = bench_progress_text("dda-line", {"long", Numeric::f32, false, 128, 192});
+  CHECK(timing == "bench dda-line: set long, float: 128/192 case runs");
+  const std::string judging = bench_progress_text("camera-ray", {"random", Numeric::reference, true, 3, 64});
+  CHECK(judging == "bench camera-ray: set random, reference outputs to compare with: 3/64 cases");
+  CHECK(judging.find('\n') == std::string::npos);
+}
+
+TEST_CASE("cli: bench_cases keeps at most the cap, evenly spaced and in order", "[cli][bench]") {
+  std::vector<int> all(1000);
+  for (int i = 0; i < 1000; ++i) all[std::size_t(i)] = i;
+  const std::vector<int> cut = bench_cases(std::vector<int>(all), 64);
+  REQUIRE(cut.size() == 64);
+  CHECK(cut.front() == 0);
+  CHECK(cut.back() >= 1000 - 1000 / 64 - 1);  // reaches the end of the set (its hard cases too)
+  CHECK(std::is_sorted(cut.begin(), cut.end()));
+  CHECK(std::adjacent_find(cut.begin(), cut.end()) == cut.end());
+  CHECK(bench_cases(std::vector<int>(all), 0).size() == 1000);  // 0: every case
+  CHECK(bench_cases(std::vector<int>(all.begin(), all.begin() + 10), 64).size() == 10);
+}
+
+TEST_CASE("cli: spread_order visits every case once, each prefix spread through the set", "[cli][bench]") {
+  CHECK(spread_order(8) == std::vector<std::size_t>{0, 4, 2, 6, 1, 5, 3, 7});
+  CHECK(spread_order(0).empty());
+  CHECK(spread_order(1) == std::vector<std::size_t>{0});
+  std::vector<std::size_t> all = spread_order(40);
+  REQUIRE(all.size() == 40);
+  std::vector<std::size_t> first(all.begin(), all.begin() + 5);
+  std::sort(all.begin(), all.end());
+  for (std::size_t i = 0; i < 40; ++i) CHECK(all[i] == i);  // a permutation
+  std::sort(first.begin(), first.end());
+  CHECK(first.front() == 0);
+  CHECK(first.back() >= 30);  // five cases reach the set's last quarter
 }
 
 TEST_CASE("cli: bad input is one line, exit 2, and no output file", "[cli][errors]") {

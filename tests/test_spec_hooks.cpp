@@ -19,6 +19,12 @@ struct Misspelt : Fake {
 };
 // Defines error but does not name it: caught at error.
 struct Unnamed : Fake {
+  static constexpr std::string_view error_unit = "ulps";
+  static double error(const Output&, const Output&) { return 0; }
+};
+// Names error but gives no unit for it (the bench's "max error (UNIT)"): caught at error.
+struct ErrorWithoutUnit : Fake {
+  static constexpr std::array hooks{Hook::error};
   static double error(const Output&, const Output&) { return 0; }
 };
 // Names handles with the wrong signature: caught at handles.
@@ -42,12 +48,14 @@ struct WrongPicture : Fake {
 };
 struct Agreeing : Fake {
   static constexpr std::array hooks{Hook::error, Hook::canonical};
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output&, const Output&) { return 0; }
   static Json canonical(const Json& r) { return r; }
 };
 
 static_assert(hook_mismatch<Misspelt>() == std::size_t(Hook::canonical));
 static_assert(hook_mismatch<Unnamed>() == std::size_t(Hook::error));
+static_assert(hook_mismatch<ErrorWithoutUnit>() == std::size_t(Hook::error));
 static_assert(hook_mismatch<WrongSignature>() == std::size_t(Hook::handles));
 static_assert(hook_mismatch<KeysNotAnArray>() == std::size_t(Hook::result_keys));
 static_assert(hook_mismatch<UnnamedSummary>() == std::size_t(Hook::summary_table));

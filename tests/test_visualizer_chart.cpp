@@ -7,6 +7,7 @@
 #include <chrono>
 #include <regex>
 #include <thread>
+#include "bench_text.hpp"
 #include "cli_harness.hpp"
 #include "headless/headless.hpp"
 
@@ -57,15 +58,19 @@ double marker_y(const std::string& svg, const std::string& cls) {
   return std::stod(m[2]);
 }
 
+// `stepwise bench ARGS --plot x.svg` (in a scratch folder named `name`): the SVG it wrote.
+std::string bench_svg(const std::string& name, const std::string& args) {
+  const auto out = scratch(name) / "chart.svg";
+  const auto r = run_stepwise("bench " + args + " --plot " + sh_quote(out.string()));
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return slurp(out);
+}
+
 }  // namespace
 
 TEST_CASE("visualizer chart: bench --plot writes an SVG with one marker per mode and labelled axes", "[visualizer][chart]") {
-  const auto dir = scratch("plot-svg");
-  const auto out = dir / "dda.svg";
-  const auto r = run_stepwise("bench dda-line --repeats 1 --set random --plot " + sh_quote(out.string()));
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const std::string svg = slurp(out);
+  const std::string svg = bench_svg("plot-svg", "dda-line --repeats 1 --set random");
   CHECK(svg.rfind("<?xml", 0) == 0);
   CHECK(unbalanced_tags(svg).empty());
   CHECK(count(svg, "<svg ") == 1);
@@ -76,8 +81,9 @@ TEST_CASE("visualizer chart: bench --plot writes an SVG with one marker per mode
     CHECK(count(svg, "class=\"legend " + std::string(numeric_name(n)) + "\"") == 1);
   }
   CHECK(count(svg, "class=\"marker ") == int(alg.numerics.size()));
-  CHECK_THAT(svg, Catch::Contains("class=\"axis-label x\"") && Catch::Contains("ns per output unit (log scale)"));
+  CHECK_THAT(svg, Catch::Contains("class=\"axis-label x\"") && Catch::Contains("time per output unit (ns), log scale"));
   CHECK_THAT(svg, Catch::Contains("class=\"axis-label y\"") && Catch::Contains("cases differing from exact (%)"));
+  CHECK_THAT(svg, Catch::Contains("y: cases whose output differs from exact rationals"));
   CHECK(count(svg, "class=\"tick x\"") >= 2);
   CHECK(count(svg, "class=\"tick y\"") >= 2);
   CHECK_THAT(svg, Catch::Contains("dda-line, set random"));
@@ -85,6 +91,56 @@ TEST_CASE("visualizer chart: bench --plot writes an SVG with one marker per mode
   const double y_exact = marker_y(svg, "marker exact random"), y_filtered = marker_y(svg, "marker filtered random");
   CHECK(std::fabs(y_exact - y_filtered) < 0.01);
   for (Numeric n : alg.numerics) CHECK(marker_y(svg, "marker " + std::string(numeric_name(n)) + " random") <= y_exact + 0.01);
+}
+
+namespace {
+
+const ChartItem* item_with_role(const Chart& c, const std::string& role) {
+  const auto it = std::find_if(c.items.begin(), c.items.end(), [&](const ChartItem& x) { return x.role == role; });
+  return it == c.items.end() ? nullptr : &*it;
+}
+
+BenchRow made_row(Numeric n, Numeric judge, std::string_view unit, std::size_t mismatches, double max_error) {
+  BenchRow r;
+  r.set = "random", r.numeric = n, r.cases = 64, r.full_cases = 5000, r.ops = 64, r.ns_per_op = n == Numeric::f32 ? 3 : 40;
+  r.mismatches = mismatches, r.max_error = max_error, r.error_unit = unit, r.judge = judge;
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("visualizer chart: every axis and label names its unit, and the judge the rows were compared with", "[visualizer][chart]") {
+  for (const Numeric judge : {Numeric::exact, Numeric::reference}) {
+    const std::string judged = std::string(judge_name(judge)), other = judge == Numeric::exact ? "reference" : "exact";
+    INFO(judged);
+    const std::vector<BenchRow> rows = {made_row(Numeric::f32, judge, "ulps", 7, 3.5), made_row(judge, judge, "ulps", 0, 0)};
+    const Chart c = bench_chart("sphere-uv", rows, 900, 500);
+    const ChartItem* y = item_with_role(c, "axis-label y");
+    const ChartItem* x = item_with_role(c, "axis-label x");
+    REQUIRE(y);
+    REQUIRE(x);
+    CHECK(y->text == "cases differing from " + judged + " (%)");
+    CHECK_THAT(x->text, Catch::Contains("(ns)"));
+    // The float marker's label: its percentage and its max error with the unit.
+    const ChartItem* label = item_with_role(c, "marker-label float");
+    REQUIRE(label);
+    CHECK_THAT(label->text, Catch::Contains("%") && Catch::Contains("max error 3.5 ulps"));
+    // The set's title says how many cases of how many ran; the note names judge and unit.
+    const ChartItem* title = item_with_role(c, "title set random");
+    REQUIRE(title);
+    CHECK_THAT(title->text, Catch::Contains("64 of 5000 cases"));
+    const ChartItem* note = item_with_role(c, "note");
+    REQUIRE(note);
+    CHECK_THAT(note->text, Catch::Contains("differs from " + std::string(judge_text(judge))) && Catch::Contains("max error in ulps"));
+    for (const ChartItem& it : c.items) CHECK_THAT(it.text, !Catch::Contains(other));  // never the judge not used
+  }
+}
+
+TEST_CASE("visualizer chart: bench --plot of a reference-only algorithm says reference, with the error's unit", "[visualizer][chart]") {
+  const std::string svg = bench_svg("plot-ref", "sphere-uv --repeats 1 --set random");
+  CHECK_THAT(svg, Catch::Contains("cases differing from reference (%)") && Catch::Contains("the 300-bit MPFR reference"));
+  CHECK_THAT(svg, !Catch::Contains("from exact"));
+  CHECK(std::regex_search(svg, std::regex("max error [0-9.e+-]+ ulps<")));  // float's label, at least
 }
 
 TEST_CASE("visualizer chart: bench --plot writes a PNG of the requested size that is not blank", "[visualizer][chart]") {

@@ -80,6 +80,7 @@ struct SutherlandHodgmanSpec {
       chain.push_back({p.a.x.get_str(), p.a.y.get_str(), p.b.x.get_str(), p.b.y.get_str(), p.weight});
     return {{"boundary", chain}};
   }
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output& got, const Output& exact) {
     if (!exact.exact || got.exact || got.lo.size() != exact.exact->size()) return 0;
     return ulps_error(got, *exact.exact);

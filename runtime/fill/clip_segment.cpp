@@ -72,6 +72,7 @@ struct CohenSutherlandSpec {
     }
     return result;
   }
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output& got, const Output& exact) {
     if (!exact.exact || got.present != exact.present || got.exact) return 0;
     return ulps_error(got, *exact.exact);

@@ -102,6 +102,7 @@ template <bool Offset> struct TriangleDdaSpec {
   }
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static constexpr std::string_view error_unit = "pixels";
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // The box's samples (each a plot and a step at most) and two steps per row.
   static std::size_t estimate_steps(const Input& in) { return triangle_steps(in); }
@@ -147,6 +148,7 @@ struct TriangleEdgeSpec {
   }
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static constexpr std::string_view error_unit = "pixels";
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   static std::size_t estimate_steps(const Input& in) { return triangle_steps(in); }
   static Output oracle(const Input& in) { return {oracle::triangle_samples(in.v), 0, {}, {}}; }

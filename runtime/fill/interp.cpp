@@ -109,6 +109,7 @@ template <bool Persp> struct InterpSpec {
   }
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static constexpr std::string_view error_unit = "pixels";
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // The box's samples (a plot and a step each at most), two steps per row, the clipping.
   static std::size_t estimate_steps(const Input& in) { return static_cast<std::size_t>(2.5 * box_samples(projected_corners(in))) + 128; }

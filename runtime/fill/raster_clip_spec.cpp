@@ -117,6 +117,7 @@ struct RasterClipSpec {
   }
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static constexpr std::string_view error_unit = "pixels";
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // The screen's samples (a plot and a step each at most) and, per screen row, a row and a span.
   static std::size_t estimate_steps(const Input& in) {

@@ -70,6 +70,7 @@ struct ScanlinePolygonSpec {
   }
   static Json to_json(const Output& o) { return fill_json(o); }
   static std::size_t ops(const Output& o) { return o.pixels.size(); }
+  static constexpr std::string_view error_unit = "pixels";
   static double error(const Output& got, const Output& exact) { return wrong_pixels(got, exact); }
   // Two steps an edge, then per row of the box: add, drop, sort, advance and a span (two steps) per
   // pair of the at most n active edges.

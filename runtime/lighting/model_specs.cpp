@@ -306,6 +306,7 @@ template <class A> struct ModelSpec {
     o.n = vec_of(t, "n"), o.l = vec_of(t, "l"), o.e = vec_of(t, "e");
     return o;
   }
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output& got, const Output& ref) {
     if (!ref.ref) return 0;
     if (got.ref) return ulps(*got.ref, *ref.ref, got.bits);  // reference mode: its own value, not the double

@@ -56,6 +56,7 @@ struct ShadeSpec {
     if (in.convention == Convention::gl) return from_oracle(in, oracle::shade_gl(oracle_case(in)));
     return compute<Rational>(prepare<Rational>(in), none);
   }
+  static constexpr std::string_view error_unit = "ulps of 1";
   static double error(const Output& got, const Output& ref) { return shade_error(got, ref); }
   static std::vector<Handle> handles() {
     return {{"/lights/0/position", Handle::Kind::point3, 8, "light"}, {"/eye", Handle::Kind::point3, 8, "eye"}, {"/n", Handle::Kind::direction3, 0, "n"}};

@@ -145,6 +145,7 @@ struct CameraSpec {
     NoProbe none;
     return compute<Rational>(prepare<Rational>(in), none);
   }
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output& got, const Output& ref) { return values_error(got, ref); }
   static std::vector<BenchSet<Input>> bench_sets();
 };
@@ -182,6 +183,7 @@ struct SphereUVSpec {
     NoProbe none;
     return compute<Rational>(prepare<Rational>(in), none);
   }
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output& got, const Output& ref) { return values_error(got, ref); }
   static std::vector<BenchSet<Input>> bench_sets() {
     std::mt19937_64 rng(77);

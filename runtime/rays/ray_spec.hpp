@@ -206,6 +206,7 @@ template <class AlgoT, Prim P> struct RaySpec {
     return {};
   }
   // The t error in units in the last place of the producing mode, at the exact t.
+  static constexpr std::string_view error_unit = "ulps of t";
   static double error(const Output& got, const Output& exact) {
     if (!got.hit || !exact.hit || !exact.exact) return 0;
     const Rational& te = exact.exact->t;

@@ -74,6 +74,7 @@ struct RayTrianglesSpec {
     c.erase("nodes_visited"), c.erase("prim_tests");
     return c;
   }
+  static constexpr std::string_view error_unit = "ulps of t";
   static double error(const Output& got, const Output& exact) { return spatial::hit_error(got, exact); }
   static std::size_t ops(const Output&) { return 1; }
   static std::size_t estimate_steps(const Input& in) { return brute_steps(in.mesh->size()); }

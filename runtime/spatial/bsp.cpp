@@ -221,6 +221,7 @@ template <bool Painter> struct BspSpec {
   static std::size_t ops(const Output& o) { return o.frags.size(); }
   // The largest error of a fragment end, in ulps of the mode at the end's larger coordinate, over
   // cases whose tree is exact's (a different tree is a mismatch); filtered ends are exact by their cuts.
+  static constexpr std::string_view error_unit = "ulps";
   static double error(const Output& got, const Output& exact) {
     if (!(got == exact) || got.filtered || !got.exact.empty() || exact.exact.empty()) return 0;
     double worst = 0;

@@ -204,6 +204,7 @@ struct BvhTraverseSpec {
     if (c.value("any", false)) c.erase("t"), c.erase("prim"), c.erase("b");
     return c;
   }
+  static constexpr std::string_view error_unit = "ulps of t";
   static double error(const Output& got, const Output& exact) { return got.any ? 0.0 : spatial::hit_error(got.h, exact.h); }
   static std::size_t ops(const Output&) { return 1; }
   static std::size_t estimate_steps(const Input& in) { return traverse_steps(in.mesh->size()); }

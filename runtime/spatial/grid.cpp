@@ -89,6 +89,7 @@ struct GridTraverse3dSpec {
   }
   static std::size_t ops(const Output& o) { return o.cells.size(); }
   // Cells in one list and not the other; 1 if the sets agree but the order does not.
+  static constexpr std::string_view error_unit = "cells";
   static double error(const Output& got, const Output& exact) {
     std::set<Cell3> a(got.cells.begin(), got.cells.end()), b(exact.cells.begin(), exact.cells.end());
     std::vector<Cell3> diff;

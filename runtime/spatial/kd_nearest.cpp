@@ -94,6 +94,7 @@ struct KdNearestSpec {
     return r;
   }
   // Wrong answers: the ranks whose id differs from the exact answer's.
+  static constexpr std::string_view error_unit = "neighbours";
   static double error(const Output& got, const Output& exact) {
     double wrong = 0;
     for (std::size_t i = 0; i < exact.ids.size(); ++i) wrong += i >= got.ids.size() || got.ids[i] != exact.ids[i];

@@ -61,6 +61,7 @@ struct KdTraverseSpec {
   static std::size_t estimate_steps(const Input& in) { return traverse_steps(in.mesh.size()); }
   static Json to_json(const Output& o) { return hit_json(o); }
   static std::size_t ops(const Output&) { return 1; }
+  static constexpr std::string_view error_unit = "ulps of t";
   static double error(const Output& got, const Output& exact) { return hit_error(got, exact); }
   // The answer without the walk's work counts (the oracle does no walk).
   static Json canonical(Json r) {

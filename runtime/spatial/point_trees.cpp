@@ -152,6 +152,7 @@ struct QuadtreeBuildSpec {
   }
   static Json to_json(const Output& o) { return output_json(o); }
   static std::size_t ops(const Output& o) { return o.tree.nodes.size(); }
+  static constexpr std::string_view error_unit = "trees";
   static double error(const Output& got, const Output& exact) { return tree_error(got, exact); }
   // A visit per node and a place per point and level; a node per 4 placements at most, plus 4.
   static std::size_t estimate_steps(const Input& in) { return cell_tree_steps(in.points.size(), false, in.p, 4); }
@@ -224,6 +225,7 @@ struct OctreeBuildSpec {
   }
   static Json to_json(const Output& o) { return output_json(o); }
   static std::size_t ops(const Output& o) { return o.tree.nodes.size(); }
+  static constexpr std::string_view error_unit = "trees";
   static double error(const Output& got, const Output& exact) { return tree_error(got, exact); }
   static std::size_t estimate_steps(const Input& in) {
     return in.points.empty() ? cell_tree_steps(in.mesh.size(), true, in.p, 8) : cell_tree_steps(in.points.size(), false, in.p, 8);

@@ -37,7 +37,7 @@ TEST_CASE("rays: camera rays, pixel centres and projections", "[rays]") {
   CHECK_FALSE(run("fisheye", 180, 0, 0, 8, 8)["valid"].get<bool>());
   CHECK(run("fisheye", 180, 4, 4, 8, 8)["valid"].get<bool>());
   // Float stays within a few float ulps of the 300-bit reference on the bench sets.
-  for (const BenchRow& row : cam.bench(Numeric::f32, 1, "")) CHECK(row.max_error < 64);
+  for (const BenchRow& row : cam.bench(std::array{Numeric::f32}, {.repeats = 1, .only_set = "", .max_cases = 0, .progress = {}})) CHECK(row.max_error < 64);
   // Bad input: exact mode, pixel outside, vup parallel to vpn, unknown projection.
   CHECK_THROWS_AS(parse_numeric_for(cam, "exact"), InputError);
   Json bad = Json::parse(R"({"camera":{"eye":[1,2,3],"vpn":[0,0,2],"vup":[0,0,1],"d":2,"fov":90},"pixel":[0,0],"size":[1,1],"projection":"perspective"})");
@@ -69,5 +69,5 @@ TEST_CASE("rays: sphere inverse mapping, the seam and the poles", "[rays]") {
   CHECK(east["v"].get<double>() == 0.5);
   CHECK(east["normal"] == Json::array({0.0, 1.0, 0.0}));
   CHECK_THROWS_AS((void)uv.open(Json::parse(R"({"sphere":{"c":[1,1,1],"r":1},"point":[1,1,1]})"), Numeric::f64), InputError);
-  for (const BenchRow& row : uv.bench(Numeric::f64, 1, "")) CHECK(row.max_error < 16);
+  for (const BenchRow& row : uv.bench(std::array{Numeric::f64}, {.repeats = 1, .only_set = "", .max_cases = 0, .progress = {}})) CHECK(row.max_error < 16);
 }

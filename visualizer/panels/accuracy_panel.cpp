@@ -25,7 +25,9 @@ void AccuracyRun::work(int repeats) {
     }
     for (Numeric n : alg_->numerics) {  // one mode at a time: stop_ is honoured between modes
       if (stop_) break;
-      std::vector<BenchRow> got = alg_->bench(n, repeats, set);
+      BenchOptions options;  // the default's cases (at most kQuickCases a set)
+      options.repeats = repeats, options.only_set = set;
+      std::vector<BenchRow> got = alg_->bench(std::span(&n, 1), options);
       {
         std::lock_guard lock(mu_);
         rows_.insert(rows_.end(), got.begin(), got.end());
@@ -104,7 +106,8 @@ void AccuracyWindow::draw(const Algorithm* alg, bool* open) {
   if (chosen) retire(), run_ = std::make_unique<AccuracyRun>(*alg, *chosen);
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   if (run_ && avail.x > 80 && avail.y > 80) {
-    chart_ = bench_chart(alg->id, run_->rows(), avail.x, avail.y, "ns per output unit against cases differing from exact; one repeat");
+    const std::vector<BenchRow> rows = run_->rows();
+    chart_ = bench_chart(alg->id, rows, avail.x, avail.y, bench_chart_note(rows, 1));
     origin_ = ImGui::GetCursorScreenPos();
     paint_chart(ImGui::GetWindowDrawList(), chart_, origin_);
     ImGui::Dummy(avail);

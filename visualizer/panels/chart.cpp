@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include "bench_text.hpp"
 
 namespace sw::vis {
 namespace {
@@ -44,14 +45,16 @@ struct Layout {
 // One set's panel in the box (x0, y0)-(x1, y1).
 void panel(Layout& L, std::string_view alg_id, const std::string& set, const std::vector<const BenchRow*>& rows, float x0, float y0, float x1,
            float y1) {
-  const std::size_t cases = rows.empty() ? 0 : rows.front()->cases;
-  L.text((x0 + x1) / 2, y0, std::string(alg_id) + ", set " + set + " (" + std::to_string(cases) + " cases)", 15, kText, 0, "title set " + set);
+  const std::size_t cases = rows.empty() ? 0 : rows.front()->cases, full = rows.empty() ? 0 : rows.front()->full_cases;
+  const Numeric judge = rows.empty() ? Numeric::exact : rows.front()->judge;
+  const std::string count = std::to_string(cases) + (cases < full ? " of " + std::to_string(full) : "") + " cases";
+  L.text((x0 + x1) / 2, y0, std::string(alg_id) + ", set " + set + " (" + count + ")", 15, kText, 0, "title set " + set);
   // Plot area: room for the y label above, tick labels left and below, the x label under those.
   const float px0 = x0 + 52, px1 = x1 - 12, py0 = y0 + 44, py1 = y1 - 42;
   if (px1 - px0 < 40 || py1 - py0 < 40) return;
   L.rect(px0, py0, px1, py1, kPlotBg, true);
-  L.text(px0 - 44, y0 + 22, "cases differing from exact (%)", 13, kDimText, -1, "axis-label y");
-  L.text((px0 + px1) / 2, py1 + 22, "ns per output unit (log scale)", 13, kDimText, 0, "axis-label x");
+  L.text(px0 - 44, y0 + 22, "cases differing from " + std::string(judge_name(judge)) + " (%)", 13, kDimText, -1, "axis-label y");
+  L.text((px0 + px1) / 2, py1 + 22, std::string(kBenchTimeLabel) + ", log scale", 13, kDimText, 0, "axis-label x");
 
   double lo = 1e300, hi = 0, top = 0;
   for (const BenchRow* r : rows) {
@@ -99,7 +102,7 @@ void panel(Layout& L, std::string_view alg_id, const std::string& set, const std
     const double pct = pct_of(r);
     const float x = sx(r->ns_per_op), y = sy(pct);
     std::string label = std::string(numeric_name(r->numeric)) + " " + fmt(pct >= 10 || pct == 0 ? "%.0f%%" : "%.2g%%", pct);
-    if (r->max_error > 0) label += ", max err " + fmt("%.3g", r->max_error);
+    if (r->max_error > 0) label += ", max error " + fmt("%.3g", r->max_error) + " " + std::string(r->error_unit);
     const float w = chart_text_width(label, 12);
     const bool left = x + 10 + w > px1;
     for (float dy : {-7.f, 7.f, -21.f, 21.f}) {
@@ -139,7 +142,7 @@ Chart bench_chart(std::string_view alg_id, const std::vector<BenchRow>& rows, fl
   Layout L;
   L.c.width = width, L.c.height = height, L.c.background = kBg;
   L.text(width / 2, 12, std::string(alg_id) + ": the cost of accuracy", 20, kText, 0, "title");
-  L.text(width / 2, 38, note.empty() ? "each mode's speed against its wrong outputs" : std::string(note), 13, kDimText, 0, "note");
+  L.text(width / 2, 38, note.empty() ? bench_chart_note(rows, 0) : std::string(note), 13, kDimText, 0, "note");
   std::vector<std::string> sets;
   std::vector<Numeric> modes;
   for (const BenchRow& r : rows) {
@@ -240,6 +243,14 @@ std::string chart_svg(const Chart& c) {
   }
   o << "</svg>\n";
   return o.str();
+}
+
+std::string bench_chart_note(const std::vector<BenchRow>& rows, int repeats, bool quick) {
+  const BenchSummary sum = bench_summary(rows, quick);
+  std::string s = repeats <= 0 ? "" : repeats_text(repeats, quick) + " per mode; ";
+  s += "y: cases whose output differs from " + std::string(judge_text(sum.judge));
+  if (!sum.error_unit.empty()) s += "; max error in " + std::string(sum.error_unit);
+  return s;
 }
 
 double nice_ceil(double v) {

@@ -32,10 +32,14 @@ struct Chart {
 // Width of `text` at font size `size` as the layout assumes it (both painters' fonts come close).
 float chart_text_width(std::string_view text, float size);
 
-// Every set of `rows` in its own panel: x = ns per output unit (log), y = the percentage of cases
-// whose output differs from exact, one marker per mode (colour and shape), a shared legend.
-// `note` goes under the title (e.g. "best of 3 repeats"). Empty rows: a chart saying so.
+// Every set of `rows` in its own panel: x = time per output unit in ns (log), y = the percentage of
+// cases whose output differs from the rows' judge (exact, or the 300-bit reference), one marker per
+// mode (colour and shape) labelled with its max error and unit, a shared legend. `note` goes under
+// the title (default: bench_chart_note(rows, 0)). Empty rows: a chart saying so.
 Chart bench_chart(std::string_view alg_id, const std::vector<BenchRow>& rows, float width, float height, std::string_view note = {});
+// The line under the chart's title: the repeats (none if repeats <= 0; repeats_text), what y
+// counts against which judge, and the max error's unit.
+std::string bench_chart_note(const std::vector<BenchRow>& rows, int repeats, bool quick = false);
 
 // The chart as a standalone SVG document.
 std::string chart_svg(const Chart& chart);
