@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 #include "catalog.hpp"
+#include "contract.hpp"
 #include "data_root.hpp"
 #include "scene_command.hpp"  // `stepwise scene check`
 #include "output.hpp"
@@ -70,10 +71,12 @@ static int run_command(int argc, char** argv) {
 
   auto* list = app.add_subcommand("list", "One line per algorithm: its id and what it does");
   bool list_markdown = false, list_json = false;
-  std::string list_listing;
-  list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
-  list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input");
+  std::string list_listing, list_contract;
+  auto* markdown_opt = list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
+  list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input (with --contract: the contract as JSON)");
   auto* listing_opt = list->add_option("--listing", list_listing, "Print one algorithm's listing, or a callee's (refract, scene-hit): line id, name and text");
+  auto* contract_opt = list->add_option("--contract", list_contract, "Print what a trace of ALG must record for `check`: per listing line its kinds, variables and geometry, the header, the result and the tolerances");
+  contract_opt->excludes(markdown_opt)->excludes(listing_opt);
 
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
 
@@ -148,6 +151,11 @@ static int run_command(int argc, char** argv) {
       return 0;
     }
     if (*list) {
+      if (contract_opt->count()) {
+        const Contract contract = make_contract(find_algorithm(list_contract));
+        std::cout << (list_json ? contract_json(contract) + "\n" : contract_text(contract));
+        return 0;
+      }
       if (list_markdown) {
         std::cout << catalog_markdown();
         return 0;
