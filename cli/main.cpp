@@ -204,6 +204,7 @@ static int run_command(int argc, char** argv) {
         rep = check_trace(in, scope, budget);
       }
       (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << one_line(rep.message, 2000) << '\n';
+      if (!rep.context.empty()) std::cerr << "  " << one_line(rep.context, 1000) << '\n';
       return rep.status;
     }
     if (*bench) {

@@ -39,6 +39,9 @@ enum class CheckScope : std::uint8_t {
 struct CheckReport {
   int status = 0;  // 0 agree, 1 diverge, 2 malformed
   std::string message;
+  // At a divergence after step 0: the step before it, as the replay recorded it (its listing line
+  // and variables: the values that led to the divergent one), on a line of its own; else empty.
+  std::string context;
   std::size_t steps = 0;
 };
 // The replay's work is held to `budget` (its max_steps) before it starts.
