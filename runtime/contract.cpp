@@ -210,7 +210,7 @@ std::string contract_text(const Contract& c) {
     for (char ch : l.text)
       if (ch != ' ' || (!text.empty() && text.back() != ' ')) text += ch;
     put((l.line < 10 ? "   " : "  ") + std::to_string(l.line) + " " + l.name + ": " + text);
-    if (l.steps.empty()) put("       (not reached by the sample runs)");
+    if (l.steps.empty()) put("       (no step on this line in the sample runs)");
     for (const ContractStep& f : l.steps) {
       std::string row = "       " + f.kind + "  vars {";
       for (std::size_t k = 0; k < f.vars.size(); ++k) row += (k ? ", " : "") + f.vars[k].first + ": " + f.vars[k].second;
@@ -225,14 +225,17 @@ std::string contract_text(const Contract& c) {
   if (alg.supports(Numeric::filtered)) put("  (filtered traces add \"fallback\": true|false, which is not compared)");
   put("");
   put("How check compares (it replays the input in " + replay_text(c) + "):");
-  put("  line, kind, \"in\", variable names and the geometry items' kinds: equal, step by step");
+  put("  line, kind, \"in\", the variables' names, the geometry items' number and kinds: equal, step by step");
   put("  integer variables and pixel/span items: equal, in every mode");
+  put("  other numbers (variables, geometry), by the trace's MODE:");
   for (Numeric n : alg.numerics) {
     std::string mode(numeric_name(n));
     mode.resize(std::max<std::size_t>(mode.size(), 9), ' ');
-    put("  " + mode + " tolerance " + tolerance_text(n) + ": " + modes_rule(n));
+    put("    " + mode + " tolerance " + tolerance_text(n) + ": " + modes_rule(n));
   }
-  put("  the result: against the oracle by the same rule (pixel lists exactly)");
+  put("  a geometry item's label, life and value: compared only where the trace states them");
+  put("  the result: against the independent oracle by the same rules" +
+      std::string(alg.supports(Numeric::reference) ? " (a reference trace's numbers within 2^-52: both sides rounded once)" : ""));
   put("  --decisions-only: numbers are not compared and a step may leave out \"geo\"");
   put("  --results-only: the result alone; the steps are read past");
   return out;
