@@ -95,10 +95,7 @@ std::string line_label(const Json& want, const Listing& own) {
   std::string s = "line " + std::to_string(id);
   if (want.contains("in")) s += " of " + want["in"].get<std::string>();
   if (const ListingLine* l = listing_line(want, own, id)) {
-    std::string text;  // the listing's indentation and column padding collapsed to single spaces
-    for (char c : l->text)
-      if (c != ' ' || (!text.empty() && text.back() != ' ')) text += c;
-    s += " (" + std::string(l->name) + ": " + one_line(text, 120) + ")";
+    s += " (" + std::string(l->name) + ": " + one_line(listing_text(l->text), 120) + ")";
   }
   return s;
 }
@@ -113,9 +110,9 @@ std::string brief(const Json& v) {
 }
 
 // The step before a divergence, the last both agree on: where the replay was and the values it
-// recorded there, which led to the divergent step. A trace value that differs from the replay's
-// (numbers are not compared under --decisions-only) is shown beside it.
-std::string step_context(const std::string& want_text, const std::string& got_text, std::size_t index, const Listing& own) {
+// recorded there, which led to the divergent step. A trace value beyond the mode's tolerance of the
+// replay's (--decisions-only does not compare numbers) is shown beside it.
+std::string step_context(const std::string& want_text, const std::string& got_text, std::size_t index, const Listing& own, const Tolerance& tol) {
   const Json want = Json::parse(want_text);
   const Json got = Json::parse(got_text, nullptr, false);
   std::string s = "after step " + std::to_string(index) + " at " + line_label(want, own) + ":";
@@ -127,7 +124,7 @@ std::string step_context(const std::string& want_text, const std::string& got_te
     s += (shown > 1 ? ", " : " ") + it.key() + " = " + brief(*it);
     if (!got.is_object() || !got.contains("vars") || !got["vars"].is_object() || !got["vars"].contains(it.key())) continue;
     const Json& mine = got["vars"][it.key()];
-    if (value_diff(*it, mine, Tolerance{Rational(0)}, true, it.key())) s += " (trace: " + brief(mine) + ")";
+    if (value_diff(*it, mine, Tolerance{tol.rel}, it->is_number_integer(), it.key())) s += " (trace: " + brief(mine) + ")";
   }
   return s;
 }
@@ -283,7 +280,7 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
       std::string m = where + " diverges" + (at.empty() ? "" : " at " + at) + " (trace line " + std::to_string(lineno) + "): " + what;
       if (rounded && what.find("beyond the tolerance") != std::string::npos)
         m += "; only values differ: --decisions-only compares the decisions alone";
-      return Diverged{m, agreed_want.empty() ? "" : step_context(agreed_want, agreed_got, i - 1, alg.listing)};
+      return Diverged{m, agreed_want.empty() ? "" : step_context(agreed_want, agreed_got, i - 1, alg.listing, tol)};
     };
 
     // Replay: the reference run streams its steps; each is compared with the trace's next line as

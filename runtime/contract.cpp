@@ -206,10 +206,7 @@ std::string contract_text(const Contract& c) {
       put(l.in.empty() ? "Listing " + std::string(alg.listing.title) + " (line: name: text, then each form of step recorded there):"
                        : "Inside " + l.in + " (steps with \"in\":\"" + l.in + "\"; lines of " + l.in + "'s listing):");
     }
-    std::string text;  // the listing's column padding collapsed to single spaces
-    for (char ch : l.text)
-      if (ch != ' ' || (!text.empty() && text.back() != ' ')) text += ch;
-    put((l.line < 10 ? "   " : "  ") + std::to_string(l.line) + " " + l.name + ": " + text);
+    put((l.line < 10 ? "   " : "  ") + std::to_string(l.line) + " " + l.name + ": " + listing_text(l.text));
     if (l.steps.empty()) put("       (no step on this line in the sample runs)");
     for (const ContractStep& f : l.steps) {
       std::string row = "       " + f.kind + "  vars {";
