@@ -1,6 +1,7 @@
 // The `stepwise` command: list, trace, run, check, bench. Other tools drive these forms, so keep
 // them stable (docs/cli.md). Bad input: one line on stderr, exit 2, no partial output file.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -152,6 +153,9 @@ static int run_command(int argc, char** argv) {
     }
     if (*list) {
       if (contract_opt->count()) {
+        const bool is_algorithm = std::any_of(catalog().begin(), catalog().end(), [&](const Algorithm& a) { return a.id == list_contract; });
+        if (!is_algorithm && find_listing(list_contract))
+          throw InputError("'" + list_contract + "' is a callee with no input of its own: its steps are in its callers' contracts (list --listing " + list_contract + " prints its listing)");
         const Contract contract = make_contract(find_algorithm(list_contract));
         std::cout << (list_json ? contract_json(contract) + "\n" : contract_text(contract));
         return 0;
