@@ -2,6 +2,7 @@
 // them stable (docs/cli.md). Bad input: one line on stderr, exit 2, no partial output file.
 #include <CLI/CLI.hpp>
 #include <unistd.h>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <sstream>
 #include "bench_text.hpp"
 #include "catalog.hpp"
+#include "contract.hpp"
 #include "data_root.hpp"
 #include "scene_command.hpp"  // `stepwise scene check`
 #include "output.hpp"
@@ -111,10 +113,12 @@ static int run_command(int argc, char** argv) {
 
   auto* list = app.add_subcommand("list", "One line per algorithm: its id and what it does");
   bool list_markdown = false, list_json = false;
-  std::string list_listing;
-  list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
-  list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input");
+  std::string list_listing, list_contract;
+  auto* markdown_opt = list->add_flag("--markdown", list_markdown, "The README's algorithm table (family, id, what, modes)");
+  list->add_flag("--json", list_json, "One JSON object per algorithm: id, family, what, modes, example input (with --contract: the contract as JSON)");
   auto* listing_opt = list->add_option("--listing", list_listing, "Print one algorithm's listing, or a callee's (refract, scene-hit): line id, name and text");
+  auto* contract_opt = list->add_option("--contract", list_contract, "Print what a trace of ALG must record for `check`: per listing line its kinds, variables and geometry, the header, the result and the tolerances");
+  contract_opt->excludes(markdown_opt)->excludes(listing_opt);
 
   auto* schema = app.add_subcommand("schema", "Print the JSON schema of a trace line (docs/trace.schema.json)");
 
@@ -190,6 +194,14 @@ static int run_command(int argc, char** argv) {
       return 0;
     }
     if (*list) {
+      if (contract_opt->count()) {
+        const bool is_algorithm = std::any_of(catalog().begin(), catalog().end(), [&](const Algorithm& a) { return a.id == list_contract; });
+        if (!is_algorithm && find_listing(list_contract))
+          throw InputError("'" + list_contract + "' is a callee with no input of its own: its steps are in its callers' contracts (list --listing " + list_contract + " prints its listing)");
+        const Contract contract = make_contract(find_algorithm(list_contract));
+        std::cout << (list_json ? contract_json(contract) + "\n" : contract_text(contract));
+        return 0;
+      }
       if (list_markdown) {
         std::cout << catalog_markdown();
         return 0;
@@ -238,6 +250,7 @@ static int run_command(int argc, char** argv) {
         rep = check_trace(in, scope, budget);
       }
       (rep.status == 0 ? std::cout : std::cerr) << (rep.status == 2 ? "stepwise: error: " : "") << one_line(rep.message, 2000) << '\n';
+      if (!rep.context.empty()) std::cerr << "  " << one_line(rep.context, 1000) << '\n';
       return rep.status;
     }
     if (*bench) {

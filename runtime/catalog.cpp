@@ -98,6 +98,12 @@ Run Algorithm::open(const Json& input, Numeric n) const {
   return Run(fn.open(*this, input), n);
 }
 
+std::vector<Run> Algorithm::seeded_runs(std::size_t per_set, Numeric n) const {
+  std::vector<Run> runs;
+  for (auto& in : fn.seeded(*this, per_set)) runs.emplace_back(std::move(in), n);
+  return runs;
+}
+
 const Algorithm& find_algorithm(std::string_view id) {
   for (const Algorithm& a : catalog())
     if (a.id == id) return a;

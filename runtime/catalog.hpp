@@ -81,6 +81,8 @@ struct SpecFunctions {
   std::vector<BenchRow> (*bench)(std::span<const Numeric> modes, const BenchOptions&);
   std::vector<std::string> (*bench_sets)();
   std::size_t (*step_cost)(Numeric);
+  // The first `per_set` inputs of each seeded bench set, opened (`list --contract` traces them).
+  std::vector<std::shared_ptr<const OpenInput>> (*seeded)(const Algorithm&, std::size_t per_set);
 };
 
 struct Algorithm {
@@ -104,6 +106,9 @@ struct Algorithm {
   bool summary_table = false;      // Run::summary_table gives a table from a recorded trace (the ray tree)
   std::vector<Numeric> numerics;  // the number types this algorithm runs on
   std::string example;            // a default input, as JSON text
+  // More inputs (JSON text) for `list --contract`: ones that reach listing lines the example and
+  // the seeded sets miss (the Spec's contract_inputs).
+  std::vector<std::string_view> contract_inputs;
   SpecFunctions fn{};
 
   // Parses the input once and returns the run handle in mode n; throws InputError naming the
@@ -122,6 +127,8 @@ struct Algorithm {
   std::vector<std::string> bench_sets() const { return fn.bench_sets(); }
   // What one step costs against the work budget in mode n (measured, docs/cli.md): 1 for most.
   std::size_t step_cost(Numeric n) const { return fn.step_cost(n); }
+  // Runs in mode n of the first `per_set` inputs of each seeded bench set.
+  std::vector<Run> seeded_runs(std::size_t per_set, Numeric n) const;
 
   bool supports(Numeric n) const;
   bool declares_result(std::string_view key) const;

@@ -64,7 +64,7 @@ class LineSink : public std::streambuf {
 
 // Thrown through the exact run to stop it at the first divergence.
 struct Diverged {
-  std::string message;
+  std::string message, context;
 };
 
 // A geometry item is an object with one kind key ({"pixel":[i,j]}) and optional modifiers.
@@ -95,10 +95,36 @@ std::string line_label(const Json& want, const Listing& own) {
   std::string s = "line " + std::to_string(id);
   if (want.contains("in")) s += " of " + want["in"].get<std::string>();
   if (const ListingLine* l = listing_line(want, own, id)) {
-    std::string text;  // the listing's indentation and column padding collapsed to single spaces
-    for (char c : l->text)
-      if (c != ' ' || (!text.empty() && text.back() != ' ')) text += c;
-    s += " (" + std::string(l->name) + ": " + one_line(text, 120) + ")";
+    s += " (" + std::string(l->name) + ": " + one_line(listing_text(l->text), 120) + ")";
+  }
+  return s;
+}
+
+// A variable's value for a message: a scalar as show() gives it, a vector as (x, y).
+std::string brief(const Json& v) {
+  const Json& parts = v.is_object() && v.contains("rgb") ? v["rgb"] : v;
+  if (!parts.is_array()) return show(parts);
+  std::string t = v.is_object() ? "rgb(" : "(";
+  for (std::size_t k = 0; k < parts.size() && k < 8; ++k) t += (k ? ", " : "") + show(parts[k]);
+  return t + (parts.size() > 8 ? ", ...)" : ")");
+}
+
+// The step before a divergence, the last both agree on: where the replay was and the values it
+// recorded there, which led to the divergent step. A trace value beyond the mode's tolerance of the
+// replay's (--decisions-only does not compare numbers) is shown beside it.
+std::string step_context(const std::string& want_text, const std::string& got_text, std::size_t index, const Listing& own, const Tolerance& tol) {
+  const Json want = Json::parse(want_text);
+  const Json got = Json::parse(got_text, nullptr, false);
+  std::string s = "after step " + std::to_string(index) + " at " + line_label(want, own) + ":";
+  const Json& vars = want.at("vars");
+  if (vars.empty()) return s + " no variables";
+  std::size_t shown = 0;
+  for (auto it = vars.begin(); it != vars.end(); ++it) {
+    if (++shown > 8) return s + " ...";
+    s += (shown > 1 ? ", " : " ") + it.key() + " = " + brief(*it);
+    if (!got.is_object() || !got.contains("vars") || !got["vars"].is_object() || !got["vars"].contains(it.key())) continue;
+    const Json& mine = got["vars"][it.key()];
+    if (value_diff(*it, mine, Tolerance{tol.rel}, it->is_number_integer(), it.key())) s += " (trace: " + brief(mine) + ")";
   }
   return s;
 }
@@ -246,18 +272,20 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
     const Tolerance tol{mode_tolerance(mode), scope == CheckScope::everything};
     const bool geometry_required = scope == CheckScope::everything;
     const bool rounded = tol.rel > 0 && mode != Numeric::reference;
+    // The last step the replay and the trace agree on, as each wrote it (their step i - 1).
+    std::string agreed_want, agreed_got;
+    std::size_t i = 0;
     // "step 12 diverges at line 9 (advance: q <- q + dp) (trace line 14): variable x: ..."
     auto diverged = [&](const std::string& where, const std::string& what, const std::string& at = "") {
       std::string m = where + " diverges" + (at.empty() ? "" : " at " + at) + " (trace line " + std::to_string(lineno) + "): " + what;
       if (rounded && what.find("beyond the tolerance") != std::string::npos)
         m += "; only values differ: --decisions-only compares the decisions alone";
-      return Diverged{m};
+      return Diverged{m, agreed_want.empty() ? "" : step_context(agreed_want, agreed_got, i - 1, alg.listing, tol)};
     };
 
     // Replay: the reference run streams its steps; each is compared with the trace's next line as
     // it is made, so memory does not grow with the number of steps; only the result line, read
     // whole, costs memory in its size (about 350 bytes a pixel of a pixel list, as JSON).
-    std::size_t i = 0;
     std::optional<Json> pending;  // a trace line read but not yet matched
     std::optional<std::string> replay_result;  // the replay's result line
     LineSink sink([&](const std::string& text) {
@@ -268,6 +296,7 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
       if (scope == CheckScope::result) return;  // the trace's steps are read past below
       if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
       if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
+        agreed_want = text, agreed_got = line;
         ++i;
         return;
       }
@@ -282,6 +311,7 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
         throw diverged(where, "step: expected " + std::to_string(i) + ", got " + show((*pending)["step"]) + " (steps are numbered from 0, in order)", at());
       if (auto d = step_diff(want, *pending, tol, alg.listing)) throw diverged(where, *d, at());
       pending.reset();
+      agreed_want = text, agreed_got = line;
       ++i;
     });
     std::ostream replay(&sink);
@@ -328,6 +358,7 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
   } catch (const Diverged& d) {
     rep.status = 1;
     rep.message = d.message;
+    rep.context = d.context;
   } catch (const InputError& e) {
     rep.status = 2;
     rep.message = e.what();

@@ -26,6 +26,8 @@ template <class Spec> class OpenSpec final : public OpenInput {
 
  public:
   OpenSpec(const Algorithm& alg, const Json& j) : OpenInput(alg, j), in_(Spec::parse(j)) {}
+  // A seeded input, parsed already: it has no JSON text (json() is null).
+  OpenSpec(const Algorithm& alg, Input in) : OpenInput(alg, Json()), in_(std::move(in)) {}
 
   void admit(Numeric n) const override {
     if constexpr (names_hook<Spec>(Hook::admit)) Spec::admit(in_, n);
@@ -197,6 +199,14 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
     std::vector<std::string> names;
     for (const auto& set : make_bench_sets<Spec>(BenchSize::full)) names.push_back(set.name);
     return names;
+  };
+  if constexpr (names_hook<Spec>(Hook::contract_inputs)) a.contract_inputs.assign(Spec::contract_inputs.begin(), Spec::contract_inputs.end());
+  a.fn.seeded = [](const Algorithm& alg, std::size_t per_set) {
+    std::vector<std::shared_ptr<const OpenInput>> opened;
+    for (auto& set : make_bench_sets<Spec>(BenchSize::quick))
+      for (std::size_t k = 0; k < std::min(per_set, set.inputs.size()); ++k)
+        opened.push_back(std::make_shared<const OpenSpec<Spec>>(alg, std::move(set.inputs[k])));
+    return opened;
   };
   a.fn.step_cost = [](Numeric n) -> std::size_t {
     if constexpr (names_hook<Spec>(Hook::step_cost)) return Spec::step_cost(n);

@@ -53,8 +53,10 @@ enum class Hook : std::uint8_t {
   picture,         // static Picture picture(const Input&, std::int64_t max_side): a picture of the input (the scene view)
   pick,            // static constexpr std::string_view pick = "/pixel": the input's pointer a click on the picture sets
   summary_table,   // static SummaryTable summary_table(const Input&, const TraceView&): a table from a recorded trace
+  contract_inputs, // static constexpr std::array contract_inputs{R"({...})"sv, ...}: inputs (JSON) that reach listing lines
+                   // the example and the seeded sets miss (a degenerate case), traced by `list --contract`
 };
-inline constexpr std::size_t kHookCount = 23;
+inline constexpr std::size_t kHookCount = 24;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -101,6 +103,8 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::picture: return requires(const In& in) { { S::picture(in, std::int64_t{1}) } -> std::same_as<Picture>; };
     case Hook::pick: return requires { { S::pick } -> std::convertible_to<std::string_view>; };
     case Hook::summary_table: return requires(const In& in, const TraceView& t) { { S::summary_table(in, t) } -> std::same_as<SummaryTable>; };
+    case Hook::contract_inputs:
+      return requires { { S::contract_inputs[0] } -> std::convertible_to<std::string_view>; S::contract_inputs.size(); };
   }
   return false;
 }

@@ -43,6 +43,13 @@ std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& in, std::os
   return runs.size();
 }
 
+std::string listing_text(std::string_view text) {
+  std::string s;
+  for (char c : text)
+    if (c != ' ' || (!s.empty() && s.back() != ' ')) s += c;
+  return s;
+}
+
 // Exact and int traces are exact; float, double and filtered traces are rounded by design;
 // reference traces carry the 300-bit functions' rounding.
 Rational mode_tolerance(Numeric n) {

@@ -28,6 +28,10 @@ std::size_t run_batch(const Algorithm& alg, Numeric n, std::istream& inputs, std
 // reference 2^-200.
 Rational mode_tolerance(Numeric n);
 
+// A listing line's text as a message shows it: its indentation and column padding collapsed to
+// single spaces (check's divergences, list --contract).
+std::string listing_text(std::string_view text);
+
 // `stepwise check` (check.cpp): replays a trace in exact (or reference) mode step by step, holding
 // its numbers to mode_tolerance, and its result against the oracle.
 enum class CheckScope : std::uint8_t {
@@ -39,6 +43,9 @@ enum class CheckScope : std::uint8_t {
 struct CheckReport {
   int status = 0;  // 0 agree, 1 diverge, 2 malformed
   std::string message;
+  // At a divergence after step 0: the step before it, as the replay recorded it (its listing line
+  // and variables: the values that led to the divergent one), on a line of its own; else empty.
+  std::string context;
   std::size_t steps = 0;
 };
 // The replay's work is held to `budget` (its max_steps) before it starts.

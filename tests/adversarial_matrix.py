@@ -768,6 +768,13 @@ def command_cases(M, first, missing, adir):
     for name, args in [("--listing an unknown algorithm", ["list", "--listing", "zz-no-such-algorithm"]),
                        ("--listing an empty name", ["list", "--listing", ""]),
                        ("--listing without a name", ["list", "--listing"]),
+                       ("--contract an unknown algorithm", ["list", "--contract", "zz-no-such-algorithm"]),
+                       ("--contract an unknown algorithm, --json", ["list", "--contract", "zz-no-such-algorithm", "--json"]),
+                       ("--contract a callee, which has no input of its own", ["list", "--contract", "refract"]),
+                       ("--contract an empty name", ["list", "--contract", ""]),
+                       ("--contract without a name", ["list", "--contract"]),
+                       ("--contract with --listing", ["list", "--contract", aid, "--listing", aid]),
+                       ("--contract with --markdown", ["list", "--contract", aid, "--markdown"]),
                        ("an extra positional", ["list", "extra"]),
                        ("an unknown option", ["list", "--zz-bogus"])]:
         M.add("list", None, name, lambda o, i, args=args: (args, {}))

@@ -88,7 +88,8 @@ TEST_CASE("reliability: NaN and infinities are strings in valid JSON, the mode r
   CHECK(result["failure"] == "t-not-finite-positive");
   const auto c = run_stepwise("check " + sh_quote(trace.string()));
   CHECK(c.status == 1);  // read, replayed, and found to diverge from exact: never "malformed"
-  CHECK(lines_in(c.err) == 1);
+  CHECK(lines_in(c.err) == 2);  // the divergence, then the step before it
+  CHECK(c.err.find("\n  after step ") != std::string::npos);
   // A mapping that underflows in float: NaN values, and the generic failure.
   std::ofstream(dir / "in.jsonl") << "{\"sphere\":{\"c\":[0,0,0],\"r\":1e-300},\"point\":[1e-300,0,0]}\n";
   const auto m = run_stepwise("run sphere-uv --numeric float --inputs " + sh_quote((dir / "in.jsonl").string()));

@@ -46,6 +46,11 @@ struct WrongPicture : Fake {
   static constexpr std::array hooks{Hook::picture};
   static int picture(const Input&, std::int64_t) { return 0; }
 };
+// Contract inputs as a single string, not an array of inputs: caught at contract_inputs.
+struct InputsNotAnArray : Fake {
+  static constexpr std::array hooks{Hook::contract_inputs};
+  static constexpr std::string_view contract_inputs = "{}";
+};
 struct Agreeing : Fake {
   static constexpr std::array hooks{Hook::error, Hook::canonical};
   static constexpr std::string_view error_unit = "ulps";
@@ -60,8 +65,9 @@ static_assert(hook_mismatch<WrongSignature>() == std::size_t(Hook::handles));
 static_assert(hook_mismatch<KeysNotAnArray>() == std::size_t(Hook::result_keys));
 static_assert(hook_mismatch<UnnamedSummary>() == std::size_t(Hook::summary_table));
 static_assert(hook_mismatch<WrongPicture>() == std::size_t(Hook::picture));
+static_assert(hook_mismatch<InputsNotAnArray>() == std::size_t(Hook::contract_inputs));
 static_assert(hook_mismatch<Agreeing>() == kHookCount);
-static_assert(std::size_t(Hook::summary_table) + 1 == kHookCount, "kHookCount counts every Hook");
+static_assert(std::size_t(Hook::contract_inputs) + 1 == kHookCount, "kHookCount counts every Hook");
 static_assert(hook_mismatch<Fake>() == kHookCount);
 
 }  // namespace

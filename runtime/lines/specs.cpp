@@ -62,7 +62,7 @@ std::vector<BenchSet<SegmentInput>> segment_bench_sets(bool integer_endpoints, B
 }
 
 template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
-  static constexpr std::array hooks{Hook::estimate_steps, Hook::handles, Hook::write_members, Hook::admit};  // write_members: each Spec below
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::handles, Hook::write_members, Hook::admit, Hook::contract_inputs};  // write_members: each Spec below
   using Algo = AlgoT;
   using Input = SegmentInput;
   using Output = PixelsOutput;
@@ -79,6 +79,8 @@ template <class AlgoT, bool IntegerEndpoints> struct SegmentSpec {
     return 3 * static_cast<std::size_t>(num::ceil_int(span)) + 16;
   }
   static std::vector<BenchSet<Input>> bench_sets(BenchSize size) { return segment_bench_sets(IntegerEndpoints, size); }
+  // The seeded sets hold no zero-length segment, which stops each walk on its own line.
+  static constexpr std::array contract_inputs{std::string_view(R"({"p0":[3,3],"p1":[3,3]})")};
   static std::vector<Handle> handles() {
     const int snap = IntegerEndpoints ? 1 : 8;
     return {{"/p0", Handle::Kind::point2, snap, "p0"}, {"/p1", Handle::Kind::point2, snap, "p1"}};

@@ -84,7 +84,7 @@ SummaryTable ray_tree_table(const HistoryInput& in, const TraceView& t) {
 }
 
 struct WhittedSpec {
-  static constexpr std::array hooks{Hook::estimate_steps, Hook::result_keys, Hook::picture, Hook::pick, Hook::summary_table};
+  static constexpr std::array hooks{Hook::estimate_steps, Hook::result_keys, Hook::picture, Hook::pick, Hook::summary_table, Hook::contract_inputs};
   using Algo = tracer::Whitted;
   using Input = HistoryInput;
   using Output = WhittedOutput;
@@ -93,6 +93,10 @@ struct WhittedSpec {
   // A pixel of the glass-spheres scene at 80x60 that sees the chrome sphere: a mirror ray, then
   // the floor and its shadow rays.
   static inline const std::string example = R"({"scene":"scenes/glass-spheres.json","size":[80,60],"pixel":[44,18]})";
+  // The seeded row (y = 30) sees no glass and no sky: a pixel through the glass sphere (refract's
+  // steps) and one of the background.
+  static constexpr std::array contract_inputs{std::string_view(R"({"scene":"scenes/glass-spheres.json","size":[80,60],"pixel":[28,15]})"),
+                                              std::string_view(R"({"scene":"scenes/glass-spheres.json","size":[80,60],"pixel":[40,2]})")};
   static Input parse(const Json& j) { return tracer::parse_history_input(j); }
   // Every number type runs in double (only f64 is declared; the bench's exact column is double too).
   template <class Num> static WhittedPrepared prepare(const Input& in) { return {tracer::history_scene(in), in.i, in.j}; }
