@@ -62,13 +62,15 @@ void print_bench(const Algorithm& alg, const std::vector<BenchRow>& rows, int re
               repeats_text(repeats, quick).c_str(), std::string(judge_text(sum.judge)).c_str(), sum.cases.c_str());
   const std::string differs = mismatch_label(sum.judge), error = error_label(sum.error_unit);
   const int wd = int(differs.size()), we = int(error.size());
-  std::printf("%-8s %-9s %8s %10s %12s %8s %*s %15s %16s%s%*s\n", "set", "numeric", "cases", "ops", "ns/op (ns)", "x double", wd, differs.c_str(),
+  int ws = 8;  // the set column: as wide as its longest name
+  for (const BenchRow& r : rows) ws = std::max(ws, int(r.set.size()));
+  std::printf("%-*s %-9s %8s %10s %12s %8s %*s %15s %16s%s%*s\n", ws, "set", "numeric", "cases", "ops", "ns/op (ns)", "x double", wd, differs.c_str(),
               "stage 2 (cases)", "fallback (cases)", we ? " " : "", we, error.c_str());
   for (const BenchRow& r : rows) {
     double base = 0;
     for (const BenchRow& b : rows)
       if (b.set == r.set && b.numeric == Numeric::f64) base = b.ns_per_op;
-    std::printf("%-8s %-9s %8zu %10zu %12.2f %8.2f %*zu %15zu %16zu", r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(), r.cases, r.ops,
+    std::printf("%-*s %-9s %8zu %10zu %12.2f %8.2f %*zu %15zu %16zu", ws, r.set.c_str(), std::string(numeric_name(r.numeric)).c_str(), r.cases, r.ops,
                 r.ns_per_op, base > 0 ? r.ns_per_op / base : 0.0, wd, r.mismatches, r.later_stage, r.fallbacks);
     if (we) std::printf(" %*.3g", we, r.max_error);
     std::printf("\n");

@@ -121,23 +121,6 @@ template <class Input> std::vector<Input> bench_cases(std::vector<Input>&& input
 // Quick benches stop repeating a mode once its repeats have taken this long (at least one runs).
 inline constexpr double kQuickRepeatSeconds = 0.5;
 
-// Quick benches compute the judge's outputs of a set for at most this long (at least one case).
-inline constexpr double kQuickJudgeSeconds = 0.5;
-
-// 0..k-1 in an order whose every prefix is spread evenly through them (bit-reversed indices), so
-// that a set cut short by time keeps cases from its whole length.
-inline std::vector<std::size_t> spread_order(std::size_t k) {
-  std::size_t bits = 0;
-  while ((std::size_t{1} << bits) < k) ++bits;
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < (std::size_t{1} << bits); ++i) {
-    std::size_t r = 0;
-    for (std::size_t b = 0; b < bits; ++b) r |= ((i >> b) & 1u) << (bits - 1 - b);
-    if (r < k) out.push_back(r);
-  }
-  return out;
-}
-
 // One mode on one set's cases, timed (best of the repeats) and compared with the judge's outputs.
 template <class Spec, class Num>
 void bench_mode(const std::vector<typename Spec::Input>& inputs, const std::vector<typename Spec::Output>& judged, const BenchOptions& options,
@@ -177,22 +160,15 @@ template <class Spec> std::vector<BenchRow> bench_spec(std::span<const Numeric> 
     if (!options.only_set.empty() && set.name != options.only_set) continue;
     const std::size_t full_cases = set.inputs.size();
     std::vector<typename Spec::Input> inputs = bench_cases(std::move(set.inputs), options.max_cases);
-    // The judge's outputs, in spread order; quick: only as many as kQuickJudgeSeconds allow (at
-    // least one). Then back in the set's order.
-    const bool quick = options.max_cases != 0;
-    std::vector<std::pair<std::size_t, Output>> taken;
-    const auto t0 = std::chrono::steady_clock::now();
-    for (std::size_t i : spread_order(inputs.size())) {
-      if (quick && !taken.empty() && std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > kQuickJudgeSeconds) break;
-      if (options.progress) options.progress({set.name, bench_judge<Spec>(), true, taken.size(), inputs.size()});
-      NoProbe none;
-      taken.emplace_back(i, Spec::template compute<Rational>(Spec::template prepare<Rational>(inputs[i]), none));
-    }
-    std::sort(taken.begin(), taken.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<typename Spec::Input> kept;
+    // The judge's outputs, once for every mode. A quick bench stays deterministic: the same cases
+    // on every machine, its heavy Specs' sets made small by their generators (bench_sets(BenchSize)).
     std::vector<Output> judged;
-    for (auto& [i, out] : taken) kept.push_back(std::move(inputs[i])), judged.push_back(std::move(out));
-    inputs = std::move(kept);
+    judged.reserve(inputs.size());
+    for (const auto& in : inputs) {
+      if (options.progress) options.progress({set.name, bench_judge<Spec>(), true, judged.size(), inputs.size()});
+      NoProbe none;
+      judged.push_back(Spec::template compute<Rational>(Spec::template prepare<Rational>(in), none));
+    }
     for (Numeric n : modes) {
       if constexpr (names_hook<Spec>(Hook::bench_runs))
         if (!Spec::bench_runs(set.name, n)) continue;

@@ -899,7 +899,9 @@ def good_answer(q):
         return (q.get("choices") or ["x"])[0]
     if t.startswith("sign"):
         return 0
-    return True
+    if t == "diverge":
+        return q["step"] + 1
+    return True  # hit, flag, same
 
 
 def wrong_form(q):
@@ -910,6 +912,8 @@ def wrong_form(q):
         return "zz-no-such-line"
     if t.startswith("sign"):
         return 5
+    if t == "diverge":
+        return -1
     return 7
 
 

@@ -257,20 +257,6 @@ TEST_CASE("cli: bench_cases keeps at most the cap, evenly spaced and in order", 
   CHECK(bench_cases(std::vector<int>(all.begin(), all.begin() + 10), 64).size() == 10);
 }
 
-TEST_CASE("cli: spread_order visits every case once, each prefix spread through the set", "[cli][bench]") {
-  CHECK(spread_order(8) == std::vector<std::size_t>{0, 4, 2, 6, 1, 5, 3, 7});
-  CHECK(spread_order(0).empty());
-  CHECK(spread_order(1) == std::vector<std::size_t>{0});
-  std::vector<std::size_t> all = spread_order(40);
-  REQUIRE(all.size() == 40);
-  std::vector<std::size_t> first(all.begin(), all.begin() + 5);
-  std::sort(all.begin(), all.end());
-  for (std::size_t i = 0; i < 40; ++i) CHECK(all[i] == i);  // a permutation
-  std::sort(first.begin(), first.end());
-  CHECK(first.front() == 0);
-  CHECK(first.back() >= 30);  // five cases reach the set's last quarter
-}
-
 TEST_CASE("cli: bad input is one line, exit 2, and no output file", "[cli][errors]") {
   const auto dir = sw::testing::scratch("bad");
   const auto out = dir / "never.jsonl";

@@ -117,7 +117,7 @@ TEST_CASE("visualizer quiz gate: at a question every view shows its shown step, 
   }
 }
 
-TEST_CASE("visualizer quiz gate: the sweep views wait for the last answer; the tree view counts only what is built", "[visualizer][quiz][render]") {
+TEST_CASE("visualizer quiz gate: the sweep views wait for the last answer, and the tree view counts only what is built", "[visualizer][quiz][render]") {
   SECTION("image: the sweep appears when every question is answered") {
     HeadlessHost host(kW, kH);
     host.set_mouse(std::nullopt, false);

@@ -100,12 +100,13 @@ struct GouraudSpec {
   static std::vector<Handle> handles() {
     return {{"/vertices/0/xy", Handle::Kind::point2, 1, "v0"}, {"/vertices/1/xy", Handle::Kind::point2, 1, "v1"}, {"/vertices/2/xy", Handle::Kind::point2, 1, "v2"}};
   }
-  static std::vector<BenchSet<Input>> bench_sets() {
+  // The reference shades every pixel in 300-bit MPFR, about 0.1 s a triangle: a quick bench takes 8.
+  static std::vector<BenchSet<Input>> bench_sets(BenchSize size) {
     std::mt19937_64 rng(23);
     auto u = [&](double lo, double hi) { return num::to_rational(double(float(std::uniform_real_distribution<double>(lo, hi)(rng)))); };
     const Input base = parse(Json::parse(example));
     BenchSet<Input> small{"small", {}};
-    for (int k = 0; k < 40; ++k) {
+    for (int k = 0; k < (size == BenchSize::quick ? 8 : 40); ++k) {
       Input t = base;
       for (auto& xy : t.xy) xy = {u(0, 10), u(0, 10)};
       for (auto& n : t.n) n = {u(-1, 1), u(-1, 1), u(1, 2)};

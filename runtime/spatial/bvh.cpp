@@ -217,13 +217,14 @@ struct BvhTraverseSpec {
     return o;
   }
   // Each input builds its BVH, so the sets are small meshes: random triangles with random rays,
-  // a grid with rays through its edges and vertices, and shadow rays.
-  static std::vector<BenchSet<Input>> bench_sets() {
+  // a grid with rays through its edges and vertices, and shadow rays. Exact queries take about
+  // 40 ms each, so a quick bench takes the first 10 queries of each set.
+  static std::vector<BenchSet<Input>> bench_sets(BenchSize size) {
     std::mt19937_64 rng(20261202);
     BenchSet<Input> random{"random-500", {}}, grid{"grid-edges", {}}, shadow{"any-hit", {}};
     const auto rm = shared(spatial::cases::random_mesh(rng, 500));
     const auto gm = shared(spatial::cases::grid_mesh(16, 16, false, 11));
-    for (int i = 0; i < 40; ++i) {
+    for (int i = 0; i < (size == BenchSize::quick ? 10 : 40); ++i) {
       random.inputs.push_back({rm, spatial::cases::random_ray(rng), true, false, 0});
       grid.inputs.push_back({gm, spatial::cases::grid_ray(*gm, 16, 16, rng, i % 3), true, false, 0});
       shadow.inputs.push_back({rm, spatial::cases::random_ray(rng), true, true, 0.5});
