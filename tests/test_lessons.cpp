@@ -239,11 +239,23 @@ TEST_CASE("lessons: quiz answers are graded against the exact trace", "[lesson][
 
 }
 
+namespace {
+// A float lesson's question at `step`, asked on its exact run beside its float run.
+struct FloatQuestion {
+  Lesson l;
+  std::shared_ptr<const TraceModel> exact, flt;
+  std::optional<Question> q;
+  FloatQuestion(const char* lesson, std::size_t step)
+      : l(load_lesson(kLessons / lesson)), exact(run_of(l, Numeric::exact)), flt(run_of(l, Numeric::f32)),
+        q(question_at(l, *exact, step, nullptr, flt.get())) {}
+};
+}  // namespace
+
 TEST_CASE("lessons: float questions are graded against both runs, flag and vs questions against the recorded value", "[lesson][quiz]") {
   SECTION("same: float's pixel at x = 1968 against exact's, read from both runs") {
-    const Lesson l = load_lesson(kLessons / "04-float-drift.md");
-    const auto exact = run_of(l, Numeric::exact), flt = run_of(l, Numeric::f32);
-    const auto q = question_at(l, *exact, 3938, nullptr, flt.get());
+    const FloatQuestion f("04-float-drift.md", 3938);
+    const auto &exact = f.exact, &flt = f.flt;
+    const auto& q = f.q;
     REQUIRE(q);
     REQUIRE(q->type == QuizType::same);
     const auto a = exact->pixel_at(q->answer_step), b = flt->pixel_at(q->answer_step);
@@ -254,12 +266,12 @@ TEST_CASE("lessons: float questions are graded against both runs, flag and vs qu
     CHECK(grade(*q, same ? "same" : "differs").right);
     CHECK_FALSE(grade(*q, !same).right);
     CHECK_THROWS_AS(grade(*q, "maybe"), InputError);
-    CHECK_FALSE(question_at(l, *exact, 3938));  // no compared run: not asked
+    CHECK_FALSE(question_at(f.l, *exact, 3938));  // no compared run: not asked
   }
   SECTION("diverge: the first plot where the runs' pixels differ") {
-    const Lesson l = load_lesson(kLessons / "08-forward-difference-drift.md");
-    const auto exact = run_of(l, Numeric::exact), flt = run_of(l, Numeric::f32);
-    const auto q = question_at(l, *exact, 221, nullptr, flt.get());
+    const FloatQuestion f("08-forward-difference-drift.md", 221);
+    const auto &exact = f.exact, &flt = f.flt;
+    const auto& q = f.q;
     REQUIRE(q);
     REQUIRE(q->type == QuizType::diverge);
     std::optional<std::size_t> first;
