@@ -197,8 +197,7 @@ static int run_command(int argc, char** argv) {
     }
     if (*list) {
       if (contract_opt->count()) {
-        const bool is_algorithm = std::any_of(catalog().begin(), catalog().end(), [&](const Algorithm& a) { return a.id == list_contract; });
-        if (!is_algorithm && find_listing(list_contract))
+        if (!algorithm_by_id(list_contract) && find_listing(list_contract))
           throw InputError("'" + list_contract + "' is a callee with no input of its own: its steps are in its callers' contracts (list --listing " + list_contract + " prints its listing)");
         const Contract contract = make_contract(find_algorithm(list_contract));
         std::cout << (list_json ? contract_json(contract) + "\n" : contract_text(contract));

@@ -104,9 +104,14 @@ std::vector<Run> Algorithm::seeded_runs(std::size_t per_set, Numeric n) const {
   return runs;
 }
 
-const Algorithm& find_algorithm(std::string_view id) {
+const Algorithm* algorithm_by_id(std::string_view id) {
   for (const Algorithm& a : catalog())
-    if (a.id == id) return a;
+    if (a.id == id) return &a;
+  return nullptr;
+}
+
+const Algorithm& find_algorithm(std::string_view id) {
+  if (const Algorithm* a = algorithm_by_id(id)) return *a;
   std::string known;
   for (const Algorithm& a : catalog()) known += (known.empty() ? "" : ", ") + std::string(a.id);
   throw InputError("unknown algorithm '" + one_line(id, 60) + "' (known: " + known + ")");

@@ -138,6 +138,8 @@ struct Algorithm {
 const std::vector<Algorithm>& catalog();
 // Throws InputError("unknown algorithm ...") listing the known ids.
 const Algorithm& find_algorithm(std::string_view id);
+// The algorithm with this id, or nullptr (a callee such as refract is no algorithm).
+const Algorithm* algorithm_by_id(std::string_view id);
 // Throws InputError for an unknown name or one the algorithm does not run on.
 Numeric parse_numeric_for(const Algorithm& alg, std::string_view name);
 

@@ -89,33 +89,6 @@ std::string replay_text(const Contract& c) {
   return mode + (has_int && c.replay != Numeric::integer ? " (an int trace in int)" : "");
 }
 
-}  // namespace
-
-namespace {
-
-Contract collect(const Algorithm& alg);
-
-// A callee that is an algorithm of its own (dda-line inside bezier-forward-diff, phong inside
-// whitted) records the same steps inside a call as alone: its own sample runs add the forms the
-// caller's runs did not reach.
-void add_callee_forms(Contract& c) {
-  std::vector<std::string> done;
-  for (const ContractLine& l : c.lines) {
-    if (l.in.empty() || l.in == c.algorithm->id || std::find(done.begin(), done.end(), l.in) != done.end()) continue;
-    done.push_back(l.in);
-    const auto it = std::find_if(catalog().begin(), catalog().end(), [&](const Algorithm& a) { return a.id == l.in; });
-    if (it == catalog().end()) continue;  // a callee with no input of its own (refract)
-    const Contract own = collect(*it);
-    for (ContractLine& line : c.lines) {
-      if (line.in != l.in) continue;
-      for (const ContractLine& o : own.lines)
-        if (o.in.empty() && o.line == line.line)
-          for (const ContractStep& f : o.steps)
-            if (std::find(line.steps.begin(), line.steps.end(), f) == line.steps.end()) line.steps.push_back(f);
-    }
-  }
-}
-
 Contract collect(const Algorithm& alg) {
   Contract c;
   c.algorithm = &alg;
@@ -168,6 +141,27 @@ Contract collect(const Algorithm& alg) {
   add_listing("", alg.listing);
   for (const auto& [in, l] : callees) add_listing(in, l);
   return c;
+}
+
+// A callee that is an algorithm of its own (dda-line inside bezier-forward-diff, phong inside
+// whitted) records the same steps inside a call as alone: its own sample runs add the forms the
+// caller's runs did not reach.
+void add_callee_forms(Contract& c) {
+  std::vector<std::string> done;
+  for (const ContractLine& l : c.lines) {
+    if (l.in.empty() || l.in == c.algorithm->id || std::find(done.begin(), done.end(), l.in) != done.end()) continue;
+    done.push_back(l.in);
+    const Algorithm* callee = algorithm_by_id(l.in);
+    if (!callee) continue;  // a callee with no input of its own (refract)
+    const Contract own = collect(*callee);
+    for (ContractLine& line : c.lines) {
+      if (line.in != l.in) continue;
+      for (const ContractLine& o : own.lines)
+        if (o.in.empty() && o.line == line.line)
+          for (const ContractStep& f : o.steps)
+            if (std::find(line.steps.begin(), line.steps.end(), f) == line.steps.end()) line.steps.push_back(f);
+    }
+  }
 }
 
 }  // namespace
