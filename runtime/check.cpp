@@ -267,7 +267,17 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
     Numeric replay_mode = mode == Numeric::integer ? Numeric::integer : alg.supports(Numeric::exact) ? Numeric::exact : Numeric::reference;
     if (!alg.supports(replay_mode) && mode != Numeric::integer && alg.supports(Numeric::f64)) replay_mode = Numeric::f64;
     if (!alg.supports(replay_mode)) throw InputError("check replays in exact or reference mode, and " + std::string(alg.id) + " has neither");
-    const Run run = alg.open(input, replay_mode);
+    // Exact mode may refuse an input that the rounded modes take (a camera whose frame needs
+    // irrational square roots, docs/pipeline/semantics.md); the reference replays it then.
+    std::optional<Run> opened;
+    try {
+      opened.emplace(alg.open(input, replay_mode));
+    } catch (const InputError&) {
+      if (replay_mode != Numeric::exact || !alg.supports(Numeric::reference)) throw;
+      replay_mode = Numeric::reference;
+      opened.emplace(alg.open(input, replay_mode));
+    }
+    const Run& run = *opened;
     run.check_budget(budget);
     const Tolerance tol{mode_tolerance(mode), scope == CheckScope::everything};
     const bool geometry_required = scope == CheckScope::everything;

@@ -59,6 +59,12 @@ class Interval {
   friend Interval sqrt(const Interval& x) {
     return outward(std::sqrt(std::max(x.lo_, 0.0)), std::sqrt(std::max(x.hi_, 0.0)), false);
   }
+  // |x| without a decision: an interval that straddles 0 gives [0, its larger end's magnitude].
+  friend Interval abs(const Interval& x) {
+    if (x.lo_ >= 0) return x;
+    if (x.hi_ <= 0) return -x;
+    return hull(0, std::max(-x.lo_, x.hi_));
+  }
   Interval& operator+=(const Interval& b) { return *this = *this + b; }
   Interval& operator-=(const Interval& b) { return *this = *this - b; }
   Interval& operator*=(const Interval& b) { return *this = *this * b; }

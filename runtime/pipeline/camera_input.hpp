@@ -1,0 +1,57 @@
+// The pipeline family's shared input: a camera as GL takes it (gluLookAt, glFrustum or glOrtho,
+// glViewport, glDepthRange), parsed once, exact. JSON (docs/pipeline/semantics.md):
+//   "camera": {"eye": [x,y,z], "target": [x,y,z], "up": [x,y,z]},
+//   "projection": {"perspective": [l,r,b,t,n,f]} or {"orthographic": [l,r,b,t,n,f]},
+//   "viewport": [x, y, width, height], and optionally "depth_range": [dn, df] (default [0, 1]).
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+#include "catalog.hpp"
+#include "core/number.hpp"
+#include "input.hpp"
+#include "pipeline/camera.hpp"
+
+namespace sw::pipespec {
+
+// Every coordinate, matrix entry and projection bound: |v| <= kCoordBound, with the curves' 64-bit
+// bound on numerator and denominator.
+inline constexpr double kCoordBound = 1e6;
+inline constexpr std::int64_t kMaxViewport = 16384;  // GL's usual GL_MAX_VIEWPORT_DIMS
+
+struct CameraInput {
+  pipe::Camera<Rational> cam;
+  // gluLookAt's frame is rational: its two lengths are. Exact and filtered modes need that
+  // (admit_camera refuses them otherwise); reference mode takes the roots to 300 bits.
+  bool rational_frame = false;
+};
+
+// Reads "camera", "projection", "viewport" and "depth_range" of j (the caller checks j's keys).
+CameraInput parse_camera(const Json& j);
+// Throws InputError when the mode cannot compute this camera exactly (filtered and exact need a
+// rational frame).
+void admit_camera(const CameraInput& c, Numeric n);
+// A number within kCoordBound and the digit bound; `what` names it in errors.
+Rational parse_coord(const Json& v, const std::string& what);
+Vec3<Rational> parse_coord3(const Json& v, const std::string& what);
+
+inline std::array<Rational, 3> arr_of(const Vec3<Rational>& v) { return {v.x, v.y, v.z}; }
+
+template <class Num> pipe::Camera<Num> camera_as(const pipe::Camera<Rational>& c) {
+  auto n = [](const Rational& q) { return num::from_rational<Num>(q); };
+  pipe::Camera<Num> o;
+  o.look = {to_num<Num>(c.look.eye), to_num<Num>(c.look.target), to_num<Num>(c.look.up)};
+  o.proj = {c.proj.perspective, n(c.proj.l), n(c.proj.r), n(c.proj.b), n(c.proj.t), n(c.proj.n), n(c.proj.f)};
+  o.view = {n(c.view.x), n(c.view.y), n(c.view.w), n(c.view.h), n(c.view.dn), n(c.view.df)};
+  return o;
+}
+
+// Seeded random cameras with rational frames, looking at the origin from about `distance`, with a
+// symmetric perspective frustum [-1,1]^2 at near n and far f, viewport w x h.
+struct CameraGen {
+  explicit CameraGen(std::uint64_t seed) : state(seed) {}
+  CameraInput next(const Rational& distance, const Rational& n, const Rational& f, std::int64_t w, std::int64_t h);
+  std::uint64_t state;
+};
+
+}  // namespace sw::pipespec
