@@ -5,6 +5,7 @@
 #include <CGAL/Plane_3.h>
 #include <CGAL/squared_distance_3.h>
 #include "cgal_bridge.hpp"
+#include "fill_oracle.hpp"
 
 namespace sw::pipeline_oracle {
 namespace {
@@ -220,6 +221,36 @@ DepthImage z_buffer(std::int64_t width, std::int64_t height, const std::vector<D
         if (lequal ? d <= cell : d < cell) cell = d, out.ids[j * width + i] = t.id, ++out.passed;
       }
   }
+  return out;
+}
+
+std::vector<std::array<Rational, 3>> blend(std::int64_t width, std::int64_t height, const std::vector<BlendTriangle>& tris,
+                                           const std::vector<std::size_t>& order, const std::array<Rational, 3>& background,
+                                           bool depth_write) {
+  // Each triangle's covered samples once, then each pixel on its own.
+  std::vector<std::vector<Pixel>> covered(tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    std::array<Vec2<Rational>, 3> xy;
+    for (int k = 0; k < 3; ++k) xy[k] = {tris[t].v[k][0], tris[t].v[k][1]};
+    covered[t] = oracle::triangle_samples(xy);
+    std::sort(covered[t].begin(), covered[t].end());
+  }
+  std::vector<std::array<Rational, 3>> out(width * height, background);
+  for (std::int64_t j = 0; j < height; ++j)
+    for (std::int64_t i = 0; i < width; ++i) {
+      Rational depth = 1;
+      std::array<Rational, 3>& c = out[j * width + i];
+      for (std::size_t t : order) {
+        if (!std::binary_search(covered[t].begin(), covered[t].end(), Pixel{i, j})) continue;
+        std::array<Vec2<Rational>, 3> xy;
+        std::array<Rational, 3> zs;
+        for (int k = 0; k < 3; ++k) xy[k] = {tris[t].v[k][0], tris[t].v[k][1]}, zs[k] = tris[t].v[k][2];
+        const Rational z = oracle::linear_at(xy, zs, Pixel{i, j});
+        if (!(z < depth)) continue;
+        for (int a = 0; a < 3; ++a) c[a] = tris[t].alpha * tris[t].rgb[a] + (1 - tris[t].alpha) * c[a];
+        if (depth_write) depth = z;
+      }
+    }
   return out;
 }
 

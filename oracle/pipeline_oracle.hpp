@@ -73,4 +73,16 @@ struct DepthImage {
 DepthImage z_buffer(std::int64_t width, std::int64_t height, const std::vector<DepthTriangle>& tris, int bits, bool lequal,
                     const Rational& clear);
 
+// Blending by brute force, per pixel: the fragments of the triangles that cover it (the fill
+// oracle's samples), depth by the fill oracle's linear interpolation, in the order given, through
+// GL_LESS and the over operator.
+struct BlendTriangle {
+  std::array<std::array<Rational, 3>, 3> v;
+  std::array<Rational, 3> rgb;
+  Rational alpha;
+};
+std::vector<std::array<Rational, 3>> blend(std::int64_t width, std::int64_t height, const std::vector<BlendTriangle>& tris,
+                                           const std::vector<std::size_t>& order, const std::array<Rational, 3>& background,
+                                           bool depth_write);
+
 }  // namespace sw::pipeline_oracle

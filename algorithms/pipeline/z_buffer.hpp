@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 #include "core/probe.hpp"
-#include "fill/triangle_edge.hpp"
+#include "pipeline/depth_plane.hpp"
 
 namespace sw::pipe {
 
@@ -56,28 +56,24 @@ DepthBuffer<Num> z_buffer(std::int64_t width, std::int64_t height, const std::ve
   DepthBuffer<Num> buf{width, height, std::vector<Num>(width * height, stored(clear)), std::vector<std::int64_t>(width * height, -1)};
   if constexpr (Probe::on) probe.step(L::clear, StepKind::init).num("clear", buf.depth.empty() ? clear : buf.depth[0]).num("r", r);
   for (const DepthTriangle<Num>& t : tris) {
+    const DepthPlane<Num> plane = depth_plane(t.v);
     const Vec3<Num>&a = t.v[0], &b = t.v[1], &c = t.v[2];
-    const Num area2 = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-    if (area2 == Num(0)) {  // no sample is covered (triangle-edge's rule); no plane exists
-      if constexpr (Probe::on) probe.step(L::plane, StepKind::miss).idx("t", t.id).num("area2", area2);
+    if (plane.area2 == Num(0)) {  // no sample is covered (triangle-edge's rule); no plane exists
+      if constexpr (Probe::on) probe.step(L::plane, StepKind::miss).idx("t", t.id).num("area2", plane.area2);
       continue;
     }
-    const Num zx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / area2;
-    const Num zy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / area2;
+    const Num &zx = plane.zx, &zy = plane.zy;
     if constexpr (Probe::on) {
       const std::array<Vec2<Num>, 3> corners{Vec2<Num>{a.x, a.y}, Vec2<Num>{b.x, b.y}, Vec2<Num>{c.x, c.y}};
-      probe.step(L::plane, StepKind::init).idx("t", t.id).num("area2", area2).num("zx", zx).num("zy", zy).geo_list(GeoKind::polygon, std::span(corners)).keep();
+      probe.step(L::plane, StepKind::init).idx("t", t.id).num("area2", plane.area2).num("zx", zx).num("zy", zy).geo_list(GeoKind::polygon, std::span(corners)).keep();
     }
     const Num o = Num(t.factor * std::max(num::abs(zx), num::abs(zy)) + t.units * r);
     if constexpr (Probe::on) probe.step(L::offset, StepKind::advance).num("o", o);
-    std::vector<Pixel> samples;
-    NoProbe quiet;
-    fill::triangle_edge<Num>(fill::EdgeTriangle<Num>{{Vec2<Num>{a.x, a.y}, Vec2<Num>{b.x, b.y}, Vec2<Num>{c.x, c.y}}, Num(1)}, samples, quiet);
+    const std::vector<Pixel> samples = covered_samples(t.v);
     if constexpr (Probe::on) probe.step(L::cover, StepKind::advance).idx("samples", std::int64_t(samples.size()));
     for (const Pixel& s : samples) {
       if (s.x < 0 || s.y < 0 || s.x >= width || s.y >= height) continue;  // outside the window: scissored
-      Num z = a.z + zx * (Num(s.x) - a.x) + zy * (Num(s.y) - a.y) + o;
-      z = std::clamp(z, Num(0), Num(1));
+      const Num z = std::clamp(Num(plane.at(Num(s.x), Num(s.y)) + o), Num(0), Num(1));
       const Num d = stored(z);
       Num& cell = buf.depth[s.y * width + s.x];
       ++buf.fragments;

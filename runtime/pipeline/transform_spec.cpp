@@ -146,13 +146,14 @@ struct TransformSpec {
   static constexpr std::string_view error_unit = "24-bit depth steps";
   static double error(const Output& got, const Output& exact) {
     double worst = 0;
-    for (std::size_t i = 0, k = 0; i < exact.vertices.size() && i < got.vertices.size(); ++i) {
-      if (!exact.vertices[i].projected) continue;
-      if (got.vertices[i].projected) {
-        const Rational diff = abs(Rational(num::to_rational(got.vertices[i].win[2]) - exact.exact_win[k][2]));
-        worst = std::max(worst, std::ldexp(diff.get_d(), 24));
+    // ke, kg: the vertex's place among the projected ones of each run (exact_win holds only those).
+    for (std::size_t i = 0, ke = 0, kg = 0; i < exact.vertices.size() && i < got.vertices.size(); ++i) {
+      const bool e = exact.vertices[i].projected, g = got.vertices[i].projected;
+      if (e && g) {
+        const Rational mine = got.exact_win.empty() ? num::to_rational(got.vertices[i].win[2]) : got.exact_win[kg][2];
+        worst = std::max(worst, std::ldexp(Rational(abs(Rational(mine - exact.exact_win[ke][2]))).get_d(), 24));
       }
-      ++k;
+      ke += e, kg += g;
     }
     return worst;
   }
