@@ -62,6 +62,13 @@ template <class Num> std::array<Vec3<Num>, 3> axis_halves(const Bounds<Num>& b) 
   return {Vec3<Num>{e.x, Num(0), Num(0)}, Vec3<Num>{Num(0), e.y, Num(0)}, Vec3<Num>{Num(0), Num(0), e.z}};
 }
 
+// Corner k of an oriented box: c + h_a where bit a of k is set, c - h_a where it is not.
+template <class Num> Vec3<Num> obb_corner(const Bounds<Num>& b, int k) {
+  Vec3<Num> p = b.c;
+  for (int a = 0; a < 3; ++a) p = k >> a & 1 ? Vec3<Num>(p + b.h[a]) : Vec3<Num>(p - b.h[a]);
+  return p;
+}
+
 template <NumberType Num, StepProbe Probe = NoProbe>
 std::vector<Cull> frustum_cull(const Camera<Num>& cam, const std::vector<Bounds<Num>>& objects, Probe& probe) {
   using L = FrustumCull;
@@ -71,7 +78,10 @@ std::vector<Cull> frustum_cull(const Camera<Num>& cam, const std::vector<Bounds<
   if constexpr (Probe::on) {
     auto& s = probe.step(L::planes, StepKind::init);
     const auto corner = frustum_corners(cam, fr);
-    for (const auto& e : kFrustumEdges) s.segment(corner[e[0]], corner[e[1]]).label("frustum").keep();
+    for (const auto& e : kFrustumEdges) {  // one label for the twelve edges keeps the view legible
+      s.segment(corner[e[0]], corner[e[1]]).keep();
+      if (&e == &kFrustumEdges[0]) s.label("frustum");
+    }
   }
   using num::abs;  // with an Interval's own abs (found by argument-dependent lookup), which decides nothing
   std::vector<Cull> out(objects.size(), Cull::inside);
@@ -83,8 +93,12 @@ std::vector<Cull> frustum_cull(const Camera<Num>& cam, const std::vector<Bounds<
       if (b.kind == K::sphere) s.sphere(b.c, b.r).label("sphere").keep();
       else if (b.kind == K::aabb) s.box(b.lo, b.hi).label("box").keep();
       else
-        for (int a = 0; a < 3; ++a)  // the box's three axes from its centre
-          s.segment(b.c, Vec3<Num>(b.c + b.h[a])).label("half-extent").keep();
+        for (int k = 0; k < 8; ++k)  // its 12 edges: corners c +- h1 +- h2 +- h3 one sign apart
+          for (int a = 0; a < 3; ++a)
+            if (!(k >> a & 1)) {
+              s.segment(obb_corner(b, k), obb_corner(b, k | 1 << a)).keep();
+              if (k == 0 && a == 0) s.label("box");
+            }
     }
     for (int k = 0; k < 6 && state != Cull::outside; ++k) {
       const Plane4<Num>& p = planes[k];

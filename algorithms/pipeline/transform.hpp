@@ -52,7 +52,10 @@ std::vector<Transformed<Num>> transform(const Mat4<Num>& M, const Camera<Num>& c
   if constexpr (Probe::on) {
     auto& s = probe.step(L::matrices, StepKind::init);
     const auto corner = frustum_corners(cam, fr);
-    for (const auto& e : kFrustumEdges) s.segment(corner[e[0]], corner[e[1]]).label("frustum").keep();
+    for (const auto& e : kFrustumEdges) {  // one label for the twelve edges keeps the view legible
+      s.segment(corner[e[0]], corner[e[1]]).keep();
+      if (&e == &kFrustumEdges[0]) s.label("frustum");
+    }
   }
   std::vector<Transformed<Num>> out(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -20,7 +20,7 @@ struct FogInput {
 struct FogOutput {
   std::vector<double> f;
   std::vector<std::array<double, 3>> rgb;
-  std::vector<Rational> exact_f;  // exact and reference modes, and the oracle
+  std::vector<Rational> exact_f;  // reference mode and the oracle
   std::vector<int> clamped;       // -1: f = 0 (all fog), 1: f = 1 (no fog), 0: between
   friend bool operator==(const FogOutput& a, const FogOutput& b) { return a.clamped == b.clamped; }
 };
@@ -101,24 +101,20 @@ std::vector<BenchSet<FogInput>> fog_sets() {
 }
 
 struct FogSpec {
-  static constexpr std::array hooks{Hook::error, Hook::admit, Hook::table_lines, Hook::bench_runs};
+  static constexpr std::array hooks{Hook::error, Hook::table_lines, Hook::estimate_steps};
   using Algo = pipe::FogAlgo;
   using Input = FogInput;
   using Output = FogOutput;
   static constexpr std::array views{View::table, View::plot};
-  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::exact, Numeric::reference};
+  // Reference: rationals with e^x to 300 bits, so linear fog is exact in it (as the lighting models).
+  static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::reference};
   static constexpr std::array<std::string_view, 1> table_lines{"fragment"};  // one row per fragment
   // Grey exponential-squared fog over five red fragments from 0 to 40 units away.
   static inline const std::string example =
       R"({"fog":{"mode":"exp2","density":0.05,"rgb":[0.5,0.5,0.5]},"fragments":[{"c":0,"rgb":[1,0,0]},{"c":10,"rgb":[1,0,0]},)"
       R"({"c":20,"rgb":[1,0,0]},{"c":30,"rgb":[1,0,0]},{"c":40,"rgb":[1,0,0]}]})";
   static Input parse(const Json& j) { return parse_fog(j); }
-  static void admit(const Input& in, Numeric n) {
-    if (n == Numeric::exact && in.params.mode != pipe::FogMode::linear)
-      throw InputError("input.fog.mode: exact mode computes linear fog only (e^x is irrational); use reference for exp and exp2");
-  }
-  // Exact mode runs the linear set only, as admit allows.
-  static bool bench_runs(const std::string& set, Numeric n) { return n != Numeric::exact || set == "linear"; }
+  static std::size_t estimate_steps(const Input& in) { return 4 * in.frags.size(); }
   template <class Num> static FogPrepared<Num> prepare(const Input& in) {
     FogPrepared<Num> p;
     const auto& q = in.params;

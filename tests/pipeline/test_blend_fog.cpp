@@ -132,7 +132,7 @@ TEST_CASE("blend: every exact step against the over operator, the pictures again
   CHECK(rejected >= 10);
 }
 
-TEST_CASE("blend: the over operator depends on the order; painter's order repairs depth writes", "[pipeline][blend]") {
+TEST_CASE("blend: the over operator depends on the order, and painter's order repairs depth writes", "[pipeline][blend]") {
   const Algorithm& alg = find_algorithm("blend");
   Json j = Json::parse(alg.example);
   // The example lists the near blue triangle first: with depth writes, the far red one is lost

@@ -115,7 +115,12 @@ TEST_CASE("z-buffer: every exact step against closed forms, the image against th
       } else if (line == "offset") {
         o = sv["o"];
         offsets += sgn(o) != 0;
-        if (sgn(t->factor) == 0) CHECK(o == t->units * r);
+        // glPolygonOffset: factor times the steeper slope, plus units times r.
+        const std::array<Vec2<Rational>, 3> xy{Vec2<Rational>{t->v[0][0], t->v[0][1]}, {t->v[1][0], t->v[1][1]}, {t->v[2][0], t->v[2][1]}};
+        const std::array<Rational, 3> zs{t->v[0][2], t->v[1][2], t->v[2][2]};
+        const Rational base = oracle::linear_at(xy, zs, Pixel{0, 0});
+        const Rational zx = abs(Rational(oracle::linear_at(xy, zs, Pixel{1, 0}) - base)), zy = abs(Rational(oracle::linear_at(xy, zs, Pixel{0, 1}) - base));
+        CHECK(o == t->factor * std::max(zx, zy) + t->units * r);
       } else if (line == "cover") {
         const std::array<Vec2<Rational>, 3> xy{Vec2<Rational>{t->v[0][0], t->v[0][1]}, {t->v[1][0], t->v[1][1]}, {t->v[2][0], t->v[2][1]}};
         CHECK(sv["samples"] == Rational(std::int64_t(oracle::triangle_samples(xy).size())));
