@@ -17,8 +17,19 @@ V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]
 V3 cross3(const V3& a, const V3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 V3 v3(const Vec3<Rational>& a) { return {a.x, a.y, a.z}; }
 
-// sqrt(x), x > 0: exact for the square of a rational, else to 400 bits (an irrational camera's frame:
-// reference mode's, which rounds to 300).
+// f(x) to 400 bits (MPFR), as a rational: more than reference mode's 300, so the two differ.
+Rational mpfr400(int (*f)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t), const Rational& x) {
+  mpfr_t m;
+  mpfr_init2(m, 400);
+  mpfr_set_q(m, x.get_mpq_t(), MPFR_RNDN);
+  f(m, m, MPFR_RNDN);
+  Rational r;
+  mpfr_get_q(r.get_mpq_t(), m);
+  mpfr_clear(m);
+  return r;
+}
+
+// sqrt(x), x > 0: exact for the square of a rational, else to 400 bits (an irrational camera's frame).
 Rational root(const Rational& x) {
   if (mpz_perfect_square_p(x.get_num_mpz_t()) && mpz_perfect_square_p(x.get_den_mpz_t())) {
     mpz_class n, d;
@@ -26,14 +37,7 @@ Rational root(const Rational& x) {
     mpz_sqrt(d.get_mpz_t(), x.get_den_mpz_t());
     return Rational(n, d);
   }
-  mpfr_t m;
-  mpfr_init2(m, 400);
-  mpfr_set_q(m, x.get_mpq_t(), MPFR_RNDN);
-  mpfr_sqrt(m, m, MPFR_RNDN);
-  Rational r;
-  mpfr_get_q(r.get_mpq_t(), m);
-  mpfr_clear(m);
-  return r;
+  return mpfr400(mpfr_sqrt, x);
 }
 
 V3 normalized(const V3& a) {
@@ -252,6 +256,12 @@ std::vector<std::array<Rational, 3>> blend(std::int64_t width, std::int64_t heig
       }
     }
   return out;
+}
+
+Rational fog_factor(int mode, const Rational& start, const Rational& end, const Rational& density, const Rational& c) {
+  const Rational dc = density * c;
+  const Rational f = mode == 0 ? Rational((end - c) / (end - start)) : sgn(dc) == 0 ? Rational(1) : mpfr400(mpfr_exp, mode == 1 ? Rational(-dc) : Rational(-dc * dc));
+  return std::clamp(f, Rational(0), Rational(1));
 }
 
 Vertex transform(const pipe::Mat4<Rational>& M, const Camera& cam, const std::array<Rational, 3>& p) {

@@ -85,4 +85,8 @@ std::vector<std::array<Rational, 3>> blend(std::int64_t width, std::int64_t heig
                                            const std::vector<std::size_t>& order, const std::array<Rational, 3>& background,
                                            bool depth_write);
 
+// GL's fog factor at distance c, clamped to [0, 1]: (end - c)/(end - start) exactly, or
+// e^(-density c), e^(-(density c)^2) to 400 bits. mode: 0 linear, 1 exp, 2 exp2.
+Rational fog_factor(int mode, const Rational& start, const Rational& end, const Rational& density, const Rational& c);
+
 }  // namespace sw::pipeline_oracle

@@ -163,13 +163,7 @@ struct BlendSpec {
   }
   static std::size_t estimate_steps(const Input& in) {
     double samples = 0;
-    for (const auto& t : in.tris) {
-      auto span = [&](int a, std::int64_t side) {
-        const Rational lo = std::min({t.v[0][a], t.v[1][a], t.v[2][a]}), hi = std::max({t.v[0][a], t.v[1][a], t.v[2][a]});
-        return std::max(0.0, std::min(double(side - 1), std::floor(hi.get_d())) - std::max(0.0, std::ceil(lo.get_d())) + 1);
-      };
-      samples += span(0, in.width) * span(1, in.height);
-    }
+    for (const auto& t : in.tris) samples += window_box_samples(t.v, in.width, in.height);
     return 4 + 2 * in.tris.size() + static_cast<std::size_t>(6 * samples);
   }
   static Output oracle(const Input& in) {

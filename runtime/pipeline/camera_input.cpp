@@ -1,5 +1,7 @@
 // The pipeline family's camera input (camera_input.hpp).
 #include "pipeline/camera_input.hpp"
+#include <algorithm>
+#include <cmath>
 #include "core/functions.hpp"
 
 namespace sw::pipespec {
@@ -75,6 +77,15 @@ void admit_camera(const CameraInput& c, Numeric n) {
     throw InputError(std::string("input.camera: ") + std::string(numeric_name(n)) +
                      " mode needs |target - eye| and |(target - eye) x up| rational (an axis-aligned or Pythagorean camera); "
                      "this camera's are irrational: use reference mode");
+}
+
+double window_box_samples(const std::array<std::array<Rational, 3>, 3>& v, std::int64_t width, std::int64_t height) {
+  auto span = [&](int a, std::int64_t side) {
+    const Rational lo = std::min({v[0][a], v[1][a], v[2][a]}), hi = std::max({v[0][a], v[1][a], v[2][a]});
+    const double l = std::max(0.0, std::ceil(lo.get_d())), h = std::min(double(side - 1), std::floor(hi.get_d()));
+    return std::max(0.0, h - l + 1);
+  };
+  return span(0, width) * span(1, height);
 }
 
 CameraInput CameraGen::next(const Rational& distance, const Rational& n, const Rational& f, std::int64_t w, std::int64_t h) {

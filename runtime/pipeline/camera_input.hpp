@@ -37,6 +37,10 @@ Vec3<Rational> parse_coord3(const Json& v, const std::string& what);
 
 inline std::array<Rational, 3> arr_of(const Vec3<Rational>& v) { return {v.x, v.y, v.z}; }
 
+// The samples of a window-space triangle's bounding box that lie in a width x height window: a
+// bound on the fragments it makes, for the raster algorithms' step estimates.
+double window_box_samples(const std::array<std::array<Rational, 3>, 3>& v, std::int64_t width, std::int64_t height);
+
 template <class Num> pipe::Camera<Num> camera_as(const pipe::Camera<Rational>& c) {
   auto n = [](const Rational& q) { return num::from_rational<Num>(q); };
   pipe::Camera<Num> o;

@@ -1,9 +1,9 @@
 // fog in the catalog: GL's fog factor per fragment. Semantics: docs/pipeline/semantics.md.
-#include <mpfr.h>
 #include <random>
 #include "register.hpp"
 #include "pipeline/camera_input.hpp"
 #include "pipeline/fog.hpp"
+#include "pipeline_oracle.hpp"
 
 namespace sw {
 namespace {
@@ -72,19 +72,6 @@ template <class Num> struct FogPrepared {
   std::vector<pipe::Fragment<Num>> frags;
 };
 
-// e^x to 400 bits, as a rational (the oracle's: independent of reference mode's 300).
-Rational exp400(const Rational& x) {
-  if (sgn(x) == 0) return 1;
-  mpfr_t m;
-  mpfr_init2(m, 400);
-  mpfr_set_q(m, x.get_mpq_t(), MPFR_RNDN);
-  mpfr_exp(m, m, MPFR_RNDN);
-  Rational r;
-  mpfr_get_q(r.get_mpq_t(), m);
-  mpfr_clear(m);
-  return r;
-}
-
 // Fragments at seeded distances over [0, 100] (and beyond the linear fog's range), each mode.
 std::vector<BenchSet<FogInput>> fog_sets() {
   std::vector<BenchSet<FogInput>> sets{{"linear", {}}, {"exp", {}}, {"exp2", {}}};
@@ -148,10 +135,7 @@ struct FogSpec {
     Output o;
     const auto& p = in.params;
     for (const auto& q : in.frags) {
-      Rational f = p.mode == pipe::FogMode::linear ? Rational((p.end - q.c) / (p.end - p.start))
-                   : p.mode == pipe::FogMode::exp  ? exp400(-p.density * q.c)
-                                                   : exp400(-(p.density * q.c) * (p.density * q.c));
-      f = std::clamp(f, Rational(0), Rational(1));
+      const Rational f = pipeline_oracle::fog_factor(static_cast<int>(p.mode), p.start, p.end, p.density, q.c);
       o.exact_f.push_back(f), o.f.push_back(f.get_d());
       std::array<double, 3> c;
       for (int a = 0; a < 3; ++a) c[a] = Rational(f * q.rgb[a] + (1 - f) * p.rgb[a]).get_d();

@@ -89,17 +89,10 @@ template <class Num> struct ZPrepared {
   Num clear;
 };
 
-// The samples a triangle's box holds inside the window, summed over the triangles.
+// The samples the triangles' boxes hold inside the window: a bound on the fragments.
 double window_samples(const ZInput& in) {
   double total = 0;
-  for (const auto& t : in.tris) {
-    auto span = [&](int a, std::int64_t side) {
-      const Rational lo = std::min({t.v[0][a], t.v[1][a], t.v[2][a]}), hi = std::max({t.v[0][a], t.v[1][a], t.v[2][a]});
-      const double l = std::max(0.0, std::ceil(lo.get_d())), h = std::min(double(side - 1), std::floor(hi.get_d()));
-      return std::max(0.0, h - l + 1);
-    };
-    total += span(0, in.width) * span(1, in.height);
-  }
+  for (const auto& t : in.tris) total += window_box_samples(t.v, in.width, in.height);
   return total;
 }
 
