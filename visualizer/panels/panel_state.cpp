@@ -38,7 +38,8 @@ void compare_cell(const VarState& v) {
     if (const std::string approx = approx_suffix(v); !approx.empty()) ImGui::SameLine(0, 0), ImGui::TextDisabled("%s", approx.c_str());
     return;
   }
-  ImGui::TextColored(var_colour(v), "~%.15g", v.value);
+  if (v.text[0] == '(') ImGui::TextColored(var_colour(v), "%.21s...", v.text.c_str());  // a vector: its start, not one component
+  else ImGui::TextColored(var_colour(v), "~%.15g", v.value);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.text.c_str());
 }
 

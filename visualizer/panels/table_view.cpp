@@ -150,6 +150,7 @@ CanvasEvents TableCanvas::draw(const CanvasInput& in, ImVec2 size) {
         const TableCell& cell = cells[c - 1];
         const ImVec4 col = cell.recorded ? ImVec4(0.90f, 0.91f, 0.94f, 1) : theme::kDim;
         if (cell.text.size() <= 14) ImGui::TextColored(col, "%s", cell.text.c_str());
+        else if (cell.text[0] == '(') ImGui::TextColored(col, "%.11s...", cell.text.c_str());  // a vector: its start, not one component
         else ImGui::TextColored(col, "~%.8g", cell.value);
         if (cell.text.size() > 14 && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", cell.text.c_str());
       }
