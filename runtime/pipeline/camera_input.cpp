@@ -79,6 +79,21 @@ void admit_camera(const CameraInput& c, Numeric n) {
                      "this camera's are irrational: use reference mode");
 }
 
+const Json& primitive_list(const Json& j, const char* key, const char* shape) {
+  const Json& list = require(j, key, "input");
+  if (!list.is_array() || list.empty() || list.size() > kMaxPrimitives)
+    throw InputError(std::string("input.") + key + ": expected a list of 1 to " + std::to_string(kMaxPrimitives) + " " + shape);
+  return list;
+}
+
+Vec3<Rational> volume_point(const CameraInput& c, std::mt19937_64& rng, double d0, double d1) {
+  std::uniform_real_distribution<double> depth(d0, d1), across(-1, 1);
+  auto q = [](double v) { return Rational(static_cast<long>(std::ldexp(v, 20))) / (1L << 20); };
+  const pipe::Frame<Rational> fr = pipe::look_frame(c.cam.look);
+  const double d = depth(rng);
+  return c.cam.look.eye + q(d) * fr.f + q(across(rng) * d) * fr.s + q(across(rng) * d) * fr.u;
+}
+
 double window_box_samples(const std::array<std::array<Rational, 3>, 3>& v, std::int64_t width, std::int64_t height) {
   auto span = [&](int a, std::int64_t side) {
     const Rational lo = std::min({v[0][a], v[1][a], v[2][a]}), hi = std::max({v[0][a], v[1][a], v[2][a]});

@@ -5,6 +5,7 @@
 //   "viewport": [x, y, width, height], and optionally "depth_range": [dn, df] (default [0, 1]).
 #pragma once
 #include <array>
+#include <random>
 #include <string>
 #include <vector>
 #include "catalog.hpp"
@@ -18,6 +19,7 @@ namespace sw::pipespec {
 // bound on numerator and denominator.
 inline constexpr double kCoordBound = 1e6;
 inline constexpr std::int64_t kMaxViewport = 16384;  // GL's usual GL_MAX_VIEWPORT_DIMS
+inline constexpr std::size_t kMaxPrimitives = 4096;  // points, triangles or volumes in one input
 
 struct CameraInput {
   pipe::Camera<Rational> cam;
@@ -50,6 +52,9 @@ template <class Num> pipe::Camera<Num> camera_as(const pipe::Camera<Rational>& c
   return o;
 }
 
+// j[key]: a list of 1 to kMaxPrimitives items (`shape` names them in the error).
+const Json& primitive_list(const Json& j, const char* key, const char* shape);
+
 // Seeded random cameras with rational frames, looking at the origin from about `distance`, with a
 // symmetric perspective frustum [-1,1]^2 at near n and far f, viewport w x h.
 struct CameraGen {
@@ -57,5 +62,9 @@ struct CameraGen {
   CameraInput next(const Rational& distance, const Rational& n, const Rational& f, std::int64_t w, std::int64_t h);
   std::uint64_t state;
 };
+
+// A point of a random camera's view volume (window [-1,1]^2 at near 1), on a 2^-20 grid: depth d
+// in [d0, d1], across (x, y) in [-1, 1]^2 of the window at that depth.
+Vec3<Rational> volume_point(const CameraInput& c, std::mt19937_64& rng, double d0, double d1);
 
 }  // namespace sw::pipespec

@@ -11,8 +11,6 @@ namespace {
 
 using namespace pipespec;
 
-inline constexpr std::size_t kMaxPoints = 4096;
-
 struct TransformInput {
   CameraInput camera;
   pipe::Mat4<Rational> model;
@@ -59,9 +57,7 @@ TransformInput parse_transform(const Json& j) {
       for (int c = 0; c < 4; ++c) in.model[r][c] = parse_coord(m[r][c], what + "[" + std::to_string(c) + "]");
     }
   }
-  const Json& pts = require(j, "points", "input");
-  if (!pts.is_array() || pts.empty() || pts.size() > kMaxPoints)
-    throw InputError("input.points: expected a list of 1 to " + std::to_string(kMaxPoints) + " points [x, y, z]");
+  const Json& pts = primitive_list(j, "points", "points [x, y, z]");
   for (std::size_t i = 0; i < pts.size(); ++i) in.points.push_back(parse_coord3(pts[i], "input.points[" + std::to_string(i) + "]"));
   return in;
 }
