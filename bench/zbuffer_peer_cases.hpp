@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <compare>
 #include <cstdint>
 #include <random>
@@ -108,8 +109,9 @@ class ZCaseMaker {
   }
   // A convex quad a, b, c, d (counter-clockwise, corners on the 1/16 grid), one per quadrant of a square.
   std::array<std::array<std::int64_t, 2>, 4> quad() {
-    for (;;) {
-      const auto [x0, y0, side] = square(8, 28);
+    for (int attempt = 0; attempt < 10000; ++attempt) {  // one corner per quadrant: nearly always convex
+      const auto sq = square(8, 28);
+      const std::int64_t x0 = sq[0], y0 = sq[1], side = sq[2];
       const std::int64_t h = side / 2;
       const auto corner = [&](std::int64_t qx, std::int64_t qy) {
         return std::array<std::int64_t, 2>{(x0 + qx * h + uniform(0, h - 1)) * 16, (y0 + qy * h + uniform(0, h - 1)) * 16};
@@ -122,6 +124,7 @@ class ZCaseMaker {
       }
       if (convex) return q;
     }
+    throw std::logic_error("zbuffer peer cases: no convex quad in 10000 attempts");
   }
   // The quad in the plane z = z0 + gx x + gy y (exact on the 2^-24 grid), drawn as two triangles
   // split along a-c, then as two split along b-d moved by dz (over kZ) and offset by (factor, units).
@@ -145,7 +148,8 @@ class ZCaseMaker {
   // Two to four triangles over one square of 12 to 32 px, with random planes that cross inside it.
   ZCase intersecting(std::size_t k) {
     ZCase c{{}, config(k), "intersecting"};
-    const auto [x0, y0, side] = square(12, 32);
+    const auto sq = square(12, 32);
+    const std::int64_t x0 = sq[0], y0 = sq[1], side = sq[2];
     const auto at = [&](std::int64_t lo, std::int64_t hi) { return (x0 + uniform(lo * side / 3, hi * side / 3)) * 16; };
     const auto at_y = [&](std::int64_t lo, std::int64_t hi) { return (y0 + uniform(lo * side / 3, hi * side / 3)) * 16; };
     for (std::int64_t t = 0, n = uniform(2, 4); t < n; ++t) {
