@@ -122,9 +122,7 @@ Facing facing(const Camera& cam, const std::array<std::array<Rational, 3>, 3>& t
   V3 from = v3(cam.look.eye);
   if (!cam.proj.perspective) from = sub(tri[0], frame_of(cam).fwd);  // a point toward the eye from a
   out.toward = static_cast<int>(CGAL::orientation(a, b, c, kpoint(from)));
-  pipe::Mat4<Rational> identity;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) identity[i][j] = i == j ? 1 : 0;
+  const pipe::Mat4<Rational> identity = pipe::identity<Rational>();
   std::array<K::Point_2, 3> w;
   for (int k = 0; k < 3; ++k) {
     const Vertex v = transform(identity, cam, tri[k]);

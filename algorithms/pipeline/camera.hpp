@@ -55,6 +55,13 @@ template <class Num> Frame<Num> look_frame(const LookAt<Num>& c) {
 // A 4x4 matrix by rows, applied to column vectors as GL does.
 template <class Num> using Mat4 = std::array<std::array<Num, 4>, 4>;
 
+template <class Num> Mat4<Num> identity() {
+  Mat4<Num> m;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) m[i][j] = Num(i == j ? 1 : 0);
+  return m;
+}
+
 // m (x, 1): a point through a matrix.
 template <class Num> Vec4<Num> apply(const Mat4<Num>& m, const Vec3<Num>& x) {
   std::array<Num, 4> out;

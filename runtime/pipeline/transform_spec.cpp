@@ -35,19 +35,12 @@ struct TransformOutput {
   }
 };
 
-pipe::Mat4<Rational> identity() {
-  pipe::Mat4<Rational> m;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) m[i][j] = i == j ? 1 : 0;
-  return m;
-}
-
 TransformInput parse_transform(const Json& j) {
   if (!j.is_object()) throw InputError("input: expected an object with camera, projection, viewport and points");
   only_keys_optional(j, {"camera", "projection", "viewport", "points"}, {"model", "depth_range"}, "input");
   TransformInput in;
   in.camera = parse_camera(j);
-  in.model = identity();
+  in.model = pipe::identity<Rational>();
   if (j.contains("model")) {
     const Json& m = j["model"];
     if (!m.is_array() || m.size() != 3) throw InputError("input.model: expected three rows of an affine matrix [[a,b,c,d],[e,f,g,h],[i,j,k,l]]");
@@ -78,7 +71,7 @@ std::vector<TransformInput> frustum_points(std::uint64_t seed, int cases, const 
   std::uniform_real_distribution<double> depth(lo, hi), across(-1, 1);
   std::vector<TransformInput> out;
   for (int k = 0; k < cases; ++k) {
-    TransformInput in{cams.next(Rational(10), near, Rational(100), 1024, 768), identity(), {}};
+    TransformInput in{cams.next(Rational(10), near, Rational(100), 1024, 768), pipe::identity<Rational>(), {}};
     const pipe::Camera<Rational>& c = in.camera.cam;
     const pipe::Frame<Rational> fr = pipe::look_frame(c.look);
     for (int i = 0; i < 16; ++i) {

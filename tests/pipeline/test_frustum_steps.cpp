@@ -10,6 +10,24 @@ using namespace sw;
 using namespace sw::testing;
 using namespace sw::testing::pipeline;
 
+namespace {
+
+// A box's eight corners, from its definition: an AABB's by picking lo or hi per axis, an OBB's as
+// c +- h1 +- h2 +- h3.
+std::array<V3, 8> box_corners(const pipe::Bounds<Rational>& b) {
+  std::array<V3, 8> out;
+  for (int k = 0; k < 8; ++k) {
+    Vec3<Rational> p = b.c;
+    if (b.kind == pipe::Bounds<Rational>::Kind::aabb) p = {(k & 1 ? b.hi : b.lo).x, (k & 2 ? b.hi : b.lo).y, (k & 4 ? b.hi : b.lo).z};
+    else
+      for (int a = 0; a < 3; ++a) p = p + Rational(k >> a & 1 ? 1 : -1) * b.h[a];
+    out[k] = arr(p);
+  }
+  return out;
+}
+
+}  // namespace
+
 TEST_CASE("pipeline: every exact step of frustum-cull against CGAL's planes", "[pipeline][steps]") {
   std::array<int, 3> outcomes{};
   for (const Json& j : inputs_of("frustum-cull")) {
@@ -49,13 +67,7 @@ TEST_CASE("pipeline: every exact step of frustum-cull against CGAL's planes", "[
           state = po::cull_sphere(cam, arr(o.c), o.r);
           CHECK(g.take(GeoKind::sphere).values == std::vector<Rational>{o.c.x, o.c.y, o.c.z, o.r});
         } else {
-          std::array<V3, 8> corners;
-          for (int k = 0; k < 8; ++k) {
-            Vec3<Rational> p = o.kind == K::aabb ? Vec3<Rational>{(k & 1 ? o.hi : o.lo).x, (k & 2 ? o.hi : o.lo).y, (k & 4 ? o.hi : o.lo).z} : o.c;
-            if (o.kind == K::obb)
-              for (int a = 0; a < 3; ++a) p = p + Rational(k >> a & 1 ? 1 : -1) * o.h[a];
-            corners[k] = arr(p);
-          }
+          const std::array<V3, 8> corners = box_corners(o);
           state = po::cull_corners(cam, corners);
           if (o.kind == K::aabb) CHECK(g.take(GeoKind::box3).values == std::vector<Rational>{o.lo.x, o.lo.y, o.lo.z, o.hi.x, o.hi.y, o.hi.z});
           else  // the 12 edges join corners of the box
@@ -82,11 +94,8 @@ TEST_CASE("pipeline: every exact step of frustum-cull against CGAL's planes", "[
         // s + rho and s - rho are the box's farthest and nearest corners along a (scaled).
         Rational hi_c, lo_c;
         bool first = true;
-        for (int c = 0; c < 8; ++c) {
-          Vec3<Rational> p = b.kind == pipe::Bounds<Rational>::Kind::aabb ? Vec3<Rational>{(c & 1 ? b.hi : b.lo).x, (c & 2 ? b.hi : b.lo).y, (c & 4 ? b.hi : b.lo).z} : b.c;
-          if (b.kind == pipe::Bounds<Rational>::Kind::obb)
-            for (int a = 0; a < 3; ++a) p = p + Rational(c >> a & 1 ? 1 : -1) * b.h[a];
-          const Rational v = at(k, p);
+        for (const V3& corner : box_corners(b)) {
+          const Rational v = at(k, vec(corner));
           if (first || v > hi_c) hi_c = v;
           if (first || v < lo_c) lo_c = v;
           first = false;

@@ -24,9 +24,7 @@ TEST_CASE("pipeline: every exact step of transform against the oracle", "[pipeli
     INFO(j.dump());
     const po::Camera cam = camera_of(j);
     const po::Frame fr = po::frame(cam);
-    pipe::Mat4<Rational> M{};
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 4; ++k) M[i][k] = i == k ? 1 : 0;
+    pipe::Mat4<Rational> M = pipe::identity<Rational>();
     if (j.contains("model"))
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 4; ++k) M[i][k] = q_of(j["model"][i][k]);
@@ -119,9 +117,7 @@ TEST_CASE("pipeline: every exact step of backface-cull against orientations", "[
       } else if (line == "project") {
         REQUIRE(f.winding);
         for (int k = 0; k < 3; ++k) {
-          pipe::Mat4<Rational> I{};
-          for (int a = 0; a < 4; ++a) I[a][a] = 1;
-          win[k] = *po::transform(I, cam, arr(k == 0 ? tri.a : k == 1 ? tri.b : tri.c)).win;
+          win[k] = *po::transform(pipe::identity<Rational>(), cam, arr(k == 0 ? tri.a : k == 1 ? tri.b : tri.c)).win;
           const std::string name = k == 0 ? "a'" : k == 1 ? "b'" : "c'";
           CHECK(sv[name + ".x"] == win[k][0]);
           CHECK(sv[name + ".y"] == win[k][1]);
