@@ -87,6 +87,11 @@ std::string Algorithm::modes_text() const {
   return modes;
 }
 
+void sort_result_set(Json& result, std::string_view key) {
+  Json& set = result[std::string(key)];
+  std::sort(set.begin(), set.end());
+}
+
 Numeric Algorithm::replay_mode() const {
   for (Numeric n : {Numeric::exact, Numeric::reference, Numeric::f64})
     if (supports(n)) return n;

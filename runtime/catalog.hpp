@@ -120,6 +120,12 @@ struct Algorithm {
 
   // A result in the form the oracle states it (sorted, for results the oracle gives as a set).
   Json canonical(Json result) const { return fn.canonical(std::move(result)); }
+  // The result members the oracle states as sets (the circles' pixels): canonical() sorts each,
+  // as sort_result_set does.
+  std::vector<std::string_view> result_sets;
+  // Whether canonical() does more than sort result_sets (the Spec's canonical hook: counters of
+  // work dropped, a clipped shape reduced).
+  bool reshapes_result = false;
   // Times the untraced algorithm in each of `modes` on its seeded bench sets (or options.only_set),
   // against its judge (BenchRow::judge): rows set by set, modes in the order given.
   std::vector<BenchRow> bench(std::span<const Numeric> modes, const BenchOptions& options) const { return fn.bench(modes, options); }
@@ -134,6 +140,9 @@ struct Algorithm {
   bool declares_result(std::string_view key) const;
   std::string modes_text() const;  // "float, double, exact"
 };
+
+// Sorts the member `key` of a result (a set the oracle states): a missing member becomes null.
+void sort_result_set(Json& result, std::string_view key);
 
 const std::vector<Algorithm>& catalog();
 // Throws InputError("unknown algorithm ...") listing the known ids.

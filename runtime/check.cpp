@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string_view>
+#include "check_result.hpp"
 #include "check_values.hpp"
 #include "trace_io.hpp"
 
@@ -15,6 +18,11 @@ namespace sw {
 
 namespace {
 
+using check_values::canonical;
+using check_values::Held;
+using check_values::read_result;
+using check_values::read_trace_line;
+using check_values::result_diff;
 using check_values::Tolerance;
 using check_values::show;
 using check_values::value_diff;
@@ -37,29 +45,40 @@ std::size_t nesting(const Json& root) {
   return deepest;
 }
 
-// Calls back once per line written to it: `check` watches the exact run's JSONL as it is made.
+// Calls back once per step line written to it: `check` watches the exact run's JSONL as it is
+// made. The result line, which the oracle judges, is passed over and not kept.
 class LineSink : public std::streambuf {
  public:
   explicit LineSink(std::function<void(const std::string&)> on_line) : on_line_(std::move(on_line)) {}
 
  protected:
   int_type overflow(int_type c) override {
-    if (c != traits_type::eof()) put(static_cast<char>(c));
+    if (c != traits_type::eof()) {
+      const char ch = static_cast<char>(c);
+      xsputn(&ch, 1);
+    }
     return c;
   }
   std::streamsize xsputn(const char* s, std::streamsize n) override {
-    for (std::streamsize i = 0; i < n; ++i) put(s[i]);
+    for (const char* end = s + n; s != end;) {
+      const char* eol = static_cast<const char*>(std::memchr(s, '\n', static_cast<std::size_t>(end - s)));
+      if (!result_) {
+        line_.append(s, eol ? eol : end);
+        result_ = line_.starts_with("{\"result\"");
+      }
+      if (!eol) break;
+      if (!result_) on_line_(line_);
+      line_.clear();
+      result_ = false;
+      s = eol + 1;
+    }
     return n;
   }
 
  private:
-  void put(char c) {
-    if (c != '\n') return line_.push_back(c);
-    on_line_(line_);
-    line_.clear();
-  }
   std::function<void(const std::string&)> on_line_;
   std::string line_;
+  bool result_ = false;  // the line is the result line
 };
 
 // Thrown through the exact run to stop it at the first divergence.
@@ -294,15 +313,10 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
     };
 
     // Replay: the reference run streams its steps; each is compared with the trace's next line as
-    // it is made, so memory does not grow with the number of steps; only the result line, read
-    // whole, costs memory in its size (about 350 bytes a pixel of a pixel list, as JSON).
+    // it is made, so memory does not grow with the number of steps. The result line costs memory
+    // in its size: its text, and its lists of tuples (pixels) held flat (check_result.hpp).
     std::optional<Json> pending;  // a trace line read but not yet matched
-    std::optional<std::string> replay_result;  // the replay's result line
     LineSink sink([&](const std::string& text) {
-      if (text.rfind("{\"result\"", 0) == 0) {  // the oracle judges the result
-        if (rounded) replay_result = text;
-        return;
-      }
       if (scope == CheckScope::result) return;  // the trace's steps are read past below
       if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
       if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
@@ -328,33 +342,44 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
     replay.exceptions(std::ios::badbit);  // let Diverged and InputError through the stream
     run.stream(replay);
 
-    auto last = next_line();
-    if (last) bounded(*last);
-    while (scope == CheckScope::result && last && !is_result(*last)) {  // --results-only: steps are not read
-      last = next_line();
-      if (last) bounded(*last);
-    }
-    if (last && !is_result(*last)) {
-      require_step_shape(*last, lineno, geometry_required);
+    // The lines after the replay's steps: the result line and nothing after it. Results are held
+    // with their lists of tuples (pixels) flat (check_result.hpp).
+    auto next_held = [&]() -> std::optional<Held> {
+      if (!next_text()) return std::nullopt;
+      Held l = read_trace_line(line, "line " + std::to_string(lineno));
+      bounded(l.json);
+      return l;
+    };
+    auto last = next_held();
+    while (scope == CheckScope::result && last && !is_result(last->json)) last = next_held();  // --results-only: steps are not read
+    if (last && !is_result(last->json)) {
+      require_step_shape(last->json, lineno, geometry_required);
       throw diverged("step " + std::to_string(i), "the algorithm ends its steps here; the trace has more");
     }
     if (!last) throw InputError("no result line ({\"result\":...}) at the end of the trace");
+    const std::string result_text = std::move(line), result_what = "line " + std::to_string(lineno);
     if (next_line()) throw InputError("line " + std::to_string(lineno) + ": content after the result line");
-    Json oracle = run.oracle();
+    auto result_of = [](Held l) { return Held{std::move(l.json["result"]), std::move(l.lists)}; };
+    std::ostringstream oracle;
+    run.oracle_to(oracle);
+    const Held want = canonical(alg, read_result(std::move(oracle).str()));
     // A reference run's result holds doubles rounded from its 300-bit values, and the oracle's from
     // 400 bits: one rounding each, so they are held within 2^-52 (docs/trace-format.md).
     Tolerance result_tol = tol;
     if (mode == Numeric::reference) result_tol.rel = std::max(tol.rel, Rational(1, mpz_class(1) << 52)), result_tol.rel_d = result_tol.rel.get_d();
-    // Results are moved, not copied: a long line's result holds every pixel.
-    Json got = std::move((*last)["result"]);
-    const Json want = alg.canonical(std::move(oracle));
-    auto d = value_diff(want, alg.canonical(rounded ? Json(got) : std::move(got)), result_tol, false, "result");
+    auto d = result_diff(want, canonical(alg, result_of(std::move(*last))), result_tol, false);
     // A rounded result can differ from the oracle's canonical form only because its rounding leaves
     // a shape the canonical form reduces otherwise (a clipped vertex 10^-16 off its edge). It is
-    // right when it matches the exact replay's own result within the tolerance, and the replay the oracle.
-    if (d && rounded && replay_mode == Numeric::exact && replay_result) {
-      const Json exact = Json::parse(*replay_result)["result"];
-      if (!value_diff(want, alg.canonical(exact), Tolerance{Rational(0)}, true, "result") && !value_diff(exact, got, result_tol, false, "result")) d.reset();
+    // right when it matches the exact replay's own result within the tolerance, and the replay the
+    // oracle. The replay's result is made again for this (not kept: it is rarely needed), and the
+    // trace's read again as written.
+    if (d && rounded && replay_mode == Numeric::exact) {
+      std::ostringstream replay;
+      run.run_to(replay);
+      const std::string exact_text = std::move(replay).str();
+      const Held exact = read_result(exact_text);
+      const Held got = result_of(read_trace_line(result_text, result_what));
+      if (!result_diff(want, canonical(alg, read_result(exact_text)), Tolerance{Rational(0)}, true) && !result_diff(exact, got, result_tol, false)) d.reset();
     }
     if (d) throw diverged("result", *d);
     rep.steps = i;

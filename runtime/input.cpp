@@ -27,10 +27,9 @@ bool encode_nonfinite(Json& root) {
 
 bool is_nonfinite_text(std::string_view s) { return s == "NaN" || s == "Infinity" || s == "-Infinity"; }
 
-Json parse_json_text(std::string_view text, std::string_view what) {
+void check_json_text(std::string_view text, std::string_view what) {
   const std::string w(what);
   if (text.size() > kMaxJsonBytes) throw InputError(w + ": " + std::to_string(text.size()) + " bytes of JSON, more than the " + std::to_string(kMaxJsonBytes >> 20) + " MiB allowed");
-  // Before the parser: a NUL byte (which would end the text early) and the nesting depth.
   std::size_t depth = 0;
   bool in_string = false, escaped = false;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -48,6 +47,26 @@ Json parse_json_text(std::string_view text, std::string_view what) {
       --depth;
     }
   }
+}
+
+InputError json_text_error(const Json::exception& e, std::string_view what) {
+  if (e.id / 100 == 4) return InputError(std::string(what) + ": a number overflows double (write large or exact values as \"p/q\" strings)");
+  // Keep nlohmann's position and reason, drop its "[json.exception...]" prefix.
+  std::string why = e.what();
+  const auto at = why.find("parse error");
+  why = at == std::string::npos ? why : why.substr(at);
+  return InputError(std::string(what) + ": malformed JSON (" + why + ")");
+}
+
+void refuse_duplicate_key(std::vector<std::string>& keys, std::string_view what) {
+  std::sort(keys.begin(), keys.end());
+  const auto dup = std::adjacent_find(keys.begin(), keys.end());
+  if (dup != keys.end()) throw InputError(std::string(what) + ": duplicate key \"" + one_line(*dup, 200) + "\"");
+}
+
+Json parse_json_text(std::string_view text, std::string_view what) {
+  // Before the parser: the size, a NUL byte (which would end the text early) and the nesting depth.
+  check_json_text(text, what);
   // The parser itself: duplicate keys are refused, not silently merged. An object with a duplicate
   // ends with fewer members than keys were read (the parser keeps the last): keys are only counted,
   // and only then is the text read again with its keys kept and sorted to name the duplicate. So
@@ -70,12 +89,7 @@ Json parse_json_text(std::string_view text, std::string_view what) {
     } else if (event == Json::parse_event_t::key && !keys.empty()) {
       keys.back().push_back(parsed.get<std::string>());
     } else if (event == Json::parse_event_t::object_end && !keys.empty()) {
-      std::vector<std::string>& k = keys.back();
-      if (parsed.is_object() && parsed.size() != k.size()) {
-        std::sort(k.begin(), k.end());
-        const auto dup = std::adjacent_find(k.begin(), k.end());
-        throw InputError(w + ": duplicate key \"" + one_line(dup == k.end() ? "?" : *dup, 200) + "\"");
-      }
+      if (parsed.is_object() && parsed.size() != keys.back().size()) refuse_duplicate_key(keys.back(), what);
       keys.pop_back();
     }
     return true;
@@ -86,19 +100,15 @@ Json parse_json_text(std::string_view text, std::string_view what) {
     } catch (const Duplicate&) {
       const Json again = Json::parse(text.begin(), text.end(), named);
       (void)again;
-      throw InputError(w + ": duplicate key");  // not reached: the second reading names it
+      throw InputError(std::string(what) + ": duplicate key");  // not reached: the second reading names it
     }
   };
   try {
     return Json::parse(text.begin(), text.end(), strict);
   } catch (const Json::parse_error& e) {
-    // Keep nlohmann's position and reason, drop its "[json.exception...]" prefix.
-    std::string why = e.what();
-    const auto at = why.find("parse error");
-    why = at == std::string::npos ? why : why.substr(at);
-    throw InputError(w + ": malformed JSON (" + why + ")");
-  } catch (const Json::out_of_range&) {
-    throw InputError(w + ": a number overflows double (write large or exact values as \"p/q\" strings)");
+    throw json_text_error(e, what);
+  } catch (const Json::out_of_range& e) {
+    throw json_text_error(e, what);
   }
 }
 

@@ -31,6 +31,14 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 
 // Parses JSON text within those bounds; anything else throws InputError naming `what`.
 Json parse_json_text(std::string_view text, std::string_view what);
+// What parse_json_text holds a text to before parsing it: its size, no NUL byte, its nesting.
+void check_json_text(std::string_view text, std::string_view what);
+// The line parse_json_text gives for a parser's error: nlohmann's position and reason, or a number
+// that overflows double.
+InputError json_text_error(const Json::exception& e, std::string_view what);
+// Throws the line parse_json_text gives for a duplicate key if an object's `keys` (sorted here)
+// hold one: the first in sorted order.
+void refuse_duplicate_key(std::vector<std::string>& keys, std::string_view what);
 // An --input argument: JSON text (starting with '{' or '[') or the name of a file holding it.
 Json read_input_arg(const std::string& arg);
 // std::getline with a bound: reads the next line (without its '\n') into `line`, false at the end.

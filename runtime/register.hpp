@@ -74,10 +74,16 @@ template <class Spec> class OpenSpec final : public OpenInput {
     write_result(out, n, fb, os);
     os << "}\n";
   }
-  Json oracle() const override {
-    Json r = Spec::to_json(Spec::oracle(in_));
-    encode_nonfinite(r);
-    return r;
+  Json oracle() const override { return oracle_json(Spec::oracle(in_)); }
+  void oracle_to(std::ostream& os) const override {
+    const Output out = Spec::oracle(in_);
+    if constexpr (names_hook<Spec>(Hook::write_members)) {
+      os << '{';
+      Spec::write_members(out, os);
+      os << '}';
+    } else {
+      os << oracle_json(out).dump();
+    }
   }
 
   void sweep(Numeric n, const SweepGrid& g, std::vector<float>& out) const override {
@@ -122,6 +128,11 @@ template <class Spec> class OpenSpec final : public OpenInput {
     NoProbe none;
     return compute(none);
   };
+  static Json oracle_json(const Output& out) {
+    Json r = Spec::to_json(out);
+    encode_nonfinite(r);
+    return r;
+  }
   // The result object, streamed from the output where the Spec writes its members itself.
   static void write_result(const Output& out, Numeric n, bool fb, std::ostream& os) {
     if constexpr (names_hook<Spec>(Hook::write_members)) {
@@ -190,7 +201,11 @@ template <AlgorithmSpec Spec> Algorithm make_algorithm() {
   if constexpr (names_hook<Spec>(Hook::params)) a.params = Spec::params();
   if constexpr (names_hook<Spec>(Hook::compare_group)) a.compare_group = Spec::compare_group;
   a.fn.open = [](const Algorithm& alg, const Json& j) -> std::shared_ptr<const OpenInput> { return std::make_shared<const OpenSpec<Spec>>(alg, j); };
+  if constexpr (names_hook<Spec>(Hook::result_sets)) a.result_sets.assign(Spec::result_sets.begin(), Spec::result_sets.end());
+  a.reshapes_result = names_hook<Spec>(Hook::canonical);
   a.fn.canonical = [](Json r) -> Json {
+    if constexpr (names_hook<Spec>(Hook::result_sets))
+      for (std::string_view key : Spec::result_sets) sort_result_set(r, key);
     if constexpr (names_hook<Spec>(Hook::canonical)) return Spec::canonical(std::move(r));
     else return r;
   };

@@ -43,6 +43,7 @@ class OpenInput {
   virtual Recorded record(Numeric) const = 0;
   virtual void stream(Numeric, std::ostream& out) const = 0;
   virtual Json oracle() const = 0;
+  virtual void oracle_to(std::ostream& out) const = 0;
   // The views' hooks (views.hpp); only those the algorithm declares (Algorithm::sweep, ...) are
   // called, and the others throw std::logic_error.
   virtual void sweep(Numeric, const SweepGrid&, std::vector<float>& out) const;
@@ -92,6 +93,8 @@ class Run {
   void stream(std::ostream& out) const { in_->stream(n_, out); }
   // The independent oracle's result (brute force, oracle/), whatever this run's mode.
   Json oracle() const { return in_->oracle(); }
+  // The same as JSON text, written as it is made where the Spec writes its members (as run_to).
+  void oracle_to(std::ostream& out) const { in_->oracle_to(out); }
 
   void sweep(const SweepGrid& g, std::vector<float>& out) const { in_->sweep(n_, g, out); }
   std::optional<std::array<double, 2>> sweep_marker() const { return in_->sweep_marker(); }

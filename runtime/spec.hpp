@@ -55,8 +55,10 @@ enum class Hook : std::uint8_t {
   summary_table,   // static SummaryTable summary_table(const Input&, const TraceView&): a table from a recorded trace
   contract_inputs, // static constexpr std::array contract_inputs{R"({...})"sv, ...}: inputs (JSON) that reach listing lines
                    // the example and the seeded sets miss (a degenerate case), traced by `list --contract`
+  result_sets,     // static constexpr std::array result_sets{"pixels"sv, ...}: result members the oracle states as sets,
+                   // which the canonical form sorts
 };
-inline constexpr std::size_t kHookCount = 24;
+inline constexpr std::size_t kHookCount = 25;
 
 template <class S> constexpr bool names_hook(Hook h) {
   if constexpr (requires { S::hooks; })
@@ -105,6 +107,8 @@ template <class S> constexpr bool defines_hook(Hook h) {
     case Hook::summary_table: return requires(const In& in, const TraceView& t) { { S::summary_table(in, t) } -> std::same_as<SummaryTable>; };
     case Hook::contract_inputs:
       return requires { { S::contract_inputs[0] } -> std::convertible_to<std::string_view>; S::contract_inputs.size(); };
+    case Hook::result_sets:
+      return requires { { S::result_sets[0] } -> std::convertible_to<std::string_view>; S::result_sets.size(); };
   }
   return false;
 }

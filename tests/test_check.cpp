@@ -2,6 +2,7 @@
 // and names the field; legitimate variation (key order, number spelling, rounding within the
 // trace's tolerance) passes.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <sstream>
 #include "catalog.hpp"
 #include "trace_io.hpp"
@@ -42,6 +43,21 @@ void require_diverges(const std::vector<Json>& lines, std::size_t step, const st
 }
 
 const char* kDda = R"({"p0":["1/3",1],"p1":[9,"7/2"]})";
+
+// The trace with its result line written as `result` (text: as another program may space and order it).
+CheckReport check_with_result(const std::vector<Json>& lines, const std::string& result, CheckScope scope = CheckScope::everything) {
+  std::stringstream s;
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) s << lines[i].dump() << '\n';
+  s << result << '\n';
+  return check_trace(s, scope);
+}
+
+// JSON text as Python's json.dumps spaces it, for values without strings (", " and ": ").
+std::string spaced(const Json& j) {
+  std::string t;
+  for (char c : j.dump()) t += c == ',' ? ", " : c == ':' ? ": " : std::string(1, c);
+  return t;
+}
 
 }  // namespace
 
@@ -290,4 +306,72 @@ TEST_CASE("check: a divergence names the listing line a student looks at: number
                                           std::string(l.lines[id - 1].name) + ": "));
   const std::string text(l.lines[id - 1].text);
   CHECK_THAT(r.message, Catch::Contains(text.substr(text.find_first_not_of(' '), 12)));  // its indentation collapsed
+}
+
+TEST_CASE("check: a long result is read as its text says and its first wrong pixel named, however it is written", "[check]") {
+  // 4,096 pixels; the result's list is held as plain integers, not as Json (check_result.hpp).
+  const auto lines = trace_lines("dda-line", R"({"p0":[0,0],"p1":[4096,1000]})", Numeric::f64);
+  const Json pixels = lines.back()["result"]["pixels"];
+  REQUIRE(pixels.size() == 4096);
+  auto written = [&](const Json& px) { return "{\"result\": {\"pixels\": " + spaced(px) + "}}"; };
+  const CheckReport ok = check_with_result(lines, written(pixels));
+  INFO(ok.message);
+  CHECK(ok.status == 0);
+  // A number may be written either way: 3000.0 is the pixel 3000, and 2.5 no pixel.
+  Json px = pixels;
+  px[3000] = {px[3000][0].get<double>(), px[3000][1].get<double>()};
+  CHECK(check_with_result(lines, written(px)).status == 0);
+  px[3000][1] = px[3000][1].get<double>() + 0.5;
+  CHECK_THAT(check_with_result(lines, written(px)).message, Catch::StartsWith("result diverges") && Catch::Contains("result.pixels[3000][1]: expected"));
+  // One pixel off deep in the list, a pixel of three numbers, a pixel too few.
+  px = pixels;
+  px[3000][1] = px[3000][1].get<int>() + 1;
+  CHECK_THAT(check_with_result(lines, written(px)).message, Catch::Contains("result.pixels[3000][1]: expected " + pixels[3000][1].dump() + ", got " + px[3000][1].dump()));
+  CHECK(check_with_result(lines, written(px), CheckScope::decisions).status == 1);
+  px = pixels;
+  px[3000].push_back(0);
+  CHECK_THAT(check_with_result(lines, written(px)).message, Catch::Contains("result.pixels[3000]: expected 2 entries, got 3"));
+  px = pixels;
+  px.erase(4000);
+  CHECK_THAT(check_with_result(lines, written(px)).message, Catch::Contains("result.pixels: expected 4096 entries, got 4095"));
+  // A key stated twice is malformed, a list or not.
+  const CheckReport dup = check_with_result(lines, R"({"result":{"pixels":[[0,0]],"pixels":)" + pixels.dump() + "}}");
+  CHECK(dup.status == 2);
+  CHECK_THAT(dup.message, Catch::Contains("duplicate key \"pixels\""));
+}
+
+TEST_CASE("check: a result stated as a set passes in any order, and a result's first differing field is the first in key order", "[check]") {
+  // The circles' pixels are compared sorted: a trace may list them in any order.
+  const auto circle = trace_lines("circle-midpoint", R"({"c":[3,-2],"r":40})", Numeric::exact);
+  Json px = circle.back()["result"]["pixels"];
+  REQUIRE(px.size() > 200);
+  std::reverse(px.begin(), px.end());
+  std::swap(px[10], px[100]);
+  const CheckReport ok = check_with_result(circle, "{\"result\":{\"pixels\":" + px.dump() + "}}");
+  INFO(ok.message);
+  CHECK(ok.status == 0);
+  px[50] = {1000, 1000};  // off the circle: named where the sorted lists first differ
+  Json want = circle.back()["result"]["pixels"], got = px;
+  std::sort(want.begin(), want.end());
+  std::sort(got.begin(), got.end());
+  std::size_t k = 0;
+  while (want[k] == got[k]) ++k;
+  CHECK_THAT(check_with_result(circle, "{\"result\":{\"pixels\":" + px.dump() + "}}").message,
+             Catch::StartsWith("result diverges") && Catch::Contains("result.pixels[" + std::to_string(k) + "]"));
+  // perspective-interp's result holds pixels and values: with both wrong, the pixels are named,
+  // whichever the trace writes first.
+  const auto fill = trace_lines("perspective-interp", find_algorithm("perspective-interp").example.c_str(), Numeric::exact);
+  Json pixels = fill.back()["result"]["pixels"], values = fill.back()["result"]["values"];
+  REQUIRE(pixels.size() > 20);
+  REQUIRE(values.size() == pixels.size());
+  const CheckReport reordered = check_with_result(fill, "{\"result\": {\"values\": " + spaced(values) + ", \"pixels\": " + spaced(pixels) + "}}");
+  INFO(reordered.message);
+  CHECK(reordered.status == 0);
+  values[5][0] = values[5][0].get<double>() + 1;
+  pixels[7][0] = pixels[7][0].get<int>() + 1;
+  CHECK_THAT(check_with_result(fill, "{\"result\": {\"values\": " + values.dump() + ", \"pixels\": " + pixels.dump() + "}}").message,
+             Catch::Contains("result.pixels[7][0]"));
+  pixels[7][0] = pixels[7][0].get<int>() - 1;
+  CHECK_THAT(check_with_result(fill, "{\"result\": {\"values\": " + values.dump() + ", \"pixels\": " + pixels.dump() + "}}").message,
+             Catch::Contains("result.values[5][0]"));
 }

@@ -67,7 +67,7 @@ static_assert(hook_mismatch<UnnamedSummary>() == std::size_t(Hook::summary_table
 static_assert(hook_mismatch<WrongPicture>() == std::size_t(Hook::picture));
 static_assert(hook_mismatch<InputsNotAnArray>() == std::size_t(Hook::contract_inputs));
 static_assert(hook_mismatch<Agreeing>() == kHookCount);
-static_assert(std::size_t(Hook::contract_inputs) + 1 == kHookCount, "kHookCount counts every Hook");
+static_assert(std::size_t(Hook::result_sets) + 1 == kHookCount, "kHookCount counts every Hook");
 static_assert(hook_mismatch<Fake>() == kHookCount);
 
 }  // namespace

@@ -118,7 +118,7 @@ curves::CircleInput parse_circle(const Json& j) {
 }
 
 template <class AlgoT> struct CircleSpec {
-  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::handles, Hook::write_members, Hook::estimate_steps, Hook::canonical};
+  static constexpr std::array hooks{Hook::table_lines, Hook::outline, Hook::handles, Hook::write_members, Hook::estimate_steps, Hook::result_sets};
   using Algo = AlgoT;
   using Input = curves::CircleInput;
   using Output = PixelsOutput;
@@ -146,11 +146,7 @@ template <class AlgoT> struct CircleSpec {
   static Output oracle(const Input& in) {
     return {midpoint ? oracle::circle_midpoint_pixels(in.cx, in.cy, in.r) : oracle::circle_interior_pixels(in.cx, in.cy, in.r)};
   }
-  static Json canonical(Json result) {
-    auto& px = result["pixels"];
-    std::sort(px.begin(), px.end());
-    return result;
-  }
+  static constexpr std::array<std::string_view, 1> result_sets{"pixels"};
   static std::vector<BenchSet<Input>> bench_sets(BenchSize size) {
     std::mt19937_64 rng(20261124);
     BenchSet<Input> random{"random", {}}, large{"large", {}};
