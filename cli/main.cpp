@@ -4,7 +4,11 @@
 #include <unistd.h>
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string_view>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -293,8 +297,38 @@ static int run_command(int argc, char** argv) {
   return 0;
 }
 
+#ifdef SW_RENDERER_EXE
+namespace {
+
+// Whether this command draws (or lists every command): those run in the renderer's build.
+bool draws(int argc, char** argv) {
+  if (argc < 2) return true;
+  const std::string_view first = argv[1];
+  if (first == "-h" || first == "--help" || first == "render" || first == "quiz" || first == "lesson") return true;
+  if (first != "bench") return false;
+  for (int i = 2; i < argc; ++i)
+    if (std::string_view(argv[i]).starts_with("--plot")) return true;
+  return false;
+}
+
+// Runs the same command line in the renderer's build beside this executable; returns only on failure.
+int run_in_renderer(char** argv) {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path renderer = (ec ? std::filesystem::path(".") : exe.parent_path()) / SW_RENDERER_EXE;
+  execv(renderer.c_str(), argv);
+  std::cerr << "stepwise: error: this command draws with OSMesa in " << renderer.string() << ", which cannot run: " << std::strerror(errno) << '\n';
+  return 2;
+}
+
+}  // namespace
+#endif
+
 int main(int argc, char** argv) {
   guard_standard_descriptors();
+#ifdef SW_RENDERER_EXE
+  if (draws(argc, argv)) return run_in_renderer(argv);
+#endif
   const int status = run_command(argc, argv);
   // What a command wrote to standard output must have reached it: a full disk, /dev/full or a
   // closed descriptor is an error, not a silent truncation.

@@ -28,7 +28,7 @@ elsewhere.mkdir(parents=True)
 r = run(["cmake", "--install", str(BUILD), "--prefix", str(prefix)], cwd=SCRATCH)
 check(r.returncode == 0, "cmake --install into a temporary prefix" + ("" if r.returncode == 0 else ": " + r.stderr[-300:]))
 share = prefix / "share" / "stepwise"
-for f in ["bin/stepwise", "bin/stepwise-gui", "share/stepwise/lessons/manifest.txt", "share/stepwise/lessons/01-dda-line.md",
+for f in ["bin/stepwise", "bin/stepwise-gl", "bin/stepwise-gui", "share/stepwise/lessons/manifest.txt", "share/stepwise/lessons/01-dda-line.md",
           "share/stepwise/scenes/glass-spheres.json", "share/stepwise/out/meshes/elephant.off", "share/doc/stepwise/README.md"]:
     check((prefix / f).is_file(), f"installed {f}")
 
@@ -64,7 +64,7 @@ if found:
         check(lib in depends, f".deb depends on {lib}")
     print("      Depends: " + depends.strip())
     contents = run(["dpkg-deb", "-c", str(found[0])], cwd=SCRATCH).stdout
-    for f in ["./usr/bin/stepwise", "./usr/bin/stepwise-gui", "./usr/share/stepwise/lessons/manifest.txt", "./usr/share/stepwise/scenes/bunny.json"]:
+    for f in ["./usr/bin/stepwise", "./usr/bin/stepwise-gl", "./usr/bin/stepwise-gui", "./usr/share/stepwise/lessons/manifest.txt", "./usr/share/stepwise/scenes/bunny.json"]:
         check(f in contents, f".deb holds {f}")
 
 print(f"install test: {len(failures)} failed" if failures else "install test: all passed")
