@@ -157,6 +157,37 @@ Cull cull_corners(const Camera& cam, const std::array<std::array<Rational, 3>, 8
   return combine(per);
 }
 
+std::vector<Pixel> window_samples(const std::array<std::array<Rational, 3>, 3>& v, std::int64_t width, std::int64_t height) {
+  std::array<K::Point_2, 3> p;
+  for (int k = 0; k < 3; ++k) p[k] = {oracle::q(v[k][0]), oracle::q(v[k][1])};
+  const CGAL::Orientation turn = CGAL::orientation(p[0], p[1], p[2]);
+  if (turn == CGAL::COLLINEAR) return {};
+  if (turn == CGAL::RIGHT_TURN) std::swap(p[1], p[2]);  // counter-clockwise from here on
+  auto covered = [&](const K::Point_2& s) {
+    for (int k = 0; k < 3; ++k) {
+      const K::Point_2 &a = p[k], &b = p[(k + 1) % 3];
+      const CGAL::Orientation o = CGAL::orientation(a, b, s);
+      if (o == CGAL::RIGHT_TURN) return false;
+      // On the edge: covered on a left edge (running down) or a bottom edge (running right).
+      if (o == CGAL::COLLINEAR && !(b.y() < a.y() || (b.y() == a.y() && b.x() > a.x()))) return false;
+    }
+    return true;
+  };
+  auto bound = [&](int axis, bool hi) {
+    Rational m = v[0][axis];
+    for (int k = 1; k < 3; ++k) m = hi ? std::max(m, v[k][axis]) : std::min(m, v[k][axis]);
+    mpz_class f;
+    if (hi) mpz_fdiv_q(f.get_mpz_t(), m.get_num_mpz_t(), m.get_den_mpz_t());
+    else mpz_cdiv_q(f.get_mpz_t(), m.get_num_mpz_t(), m.get_den_mpz_t());
+    return std::clamp<std::int64_t>(f.get_si(), -1, (axis == 0 ? width : height));
+  };
+  std::vector<Pixel> out;
+  for (std::int64_t j = std::max<std::int64_t>(0, bound(1, false)); j <= std::min(height - 1, bound(1, true)); ++j)
+    for (std::int64_t i = std::max<std::int64_t>(0, bound(0, false)); i <= std::min(width - 1, bound(0, true)); ++i)
+      if (covered(K::Point_2(i, j))) out.push_back({i, j});
+  return out;
+}
+
 DepthImage z_buffer(std::int64_t width, std::int64_t height, const std::vector<DepthTriangle>& tris, int bits, bool lequal,
                     const Rational& clear) {
   const Rational M = bits == 0 ? Rational(1) : Rational((mpz_class(1) << bits) - 1);
@@ -184,43 +215,24 @@ DepthImage z_buffer(std::int64_t width, std::int64_t height, const std::vector<D
     const Rational zx = -oracle::r(plane.a()) / oracle::r(plane.c()), zy = -oracle::r(plane.b()) / oracle::r(plane.c());
     const Rational offset = t.factor * std::max(Rational(abs(zx)), Rational(abs(zy))) + t.units * r;
     const Rational area = oracle::r(CGAL::area(p[0], p[1], p[2]));
-    auto covered = [&](const K::Point_2& s) {
-      for (int k = 0; k < 3; ++k) {
-        const K::Point_2 &a = p[k], &b = p[(k + 1) % 3];
-        const CGAL::Orientation o = CGAL::orientation(a, b, s);
-        if (o == CGAL::RIGHT_TURN) return false;
-        // On the edge: covered on a left edge (running down) or a bottom edge (running right).
-        if (o == CGAL::COLLINEAR && !(b.y() < a.y() || (b.y() == a.y() && b.x() > a.x()))) return false;
-      }
-      return true;
-    };
-    auto bound = [&](int axis, bool hi) {
-      Rational m = t.v[0][axis];
-      for (int k = 1; k < 3; ++k) m = hi ? std::max(m, t.v[k][axis]) : std::min(m, t.v[k][axis]);
-      mpz_class f;
-      if (hi) mpz_fdiv_q(f.get_mpz_t(), m.get_num_mpz_t(), m.get_den_mpz_t());
-      else mpz_cdiv_q(f.get_mpz_t(), m.get_num_mpz_t(), m.get_den_mpz_t());
-      return std::clamp<std::int64_t>(f.get_si(), -1, (axis == 0 ? width : height));
-    };
-    for (std::int64_t j = std::max<std::int64_t>(0, bound(1, false)); j <= std::min(height - 1, bound(1, true)); ++j)
-      for (std::int64_t i = std::max<std::int64_t>(0, bound(0, false)); i <= std::min(width - 1, bound(0, true)); ++i) {
-        const K::Point_2 s(i, j);
-        if (!covered(s)) continue;
-        // Barycentric weights: each the area opposite its vertex over the whole.
-        const Rational la = oracle::r(CGAL::area(s, p[1], p[2])) / area, lb = oracle::r(CGAL::area(p[0], s, p[2])) / area;
-        const Rational lc = 1 - la - lb;
-        auto depth_of = [&](const K::Point_2& q) {
-          for (int k = 0; k < 3; ++k)
-            if (t.v[k][0] == oracle::r(q.x()) && t.v[k][1] == oracle::r(q.y())) return t.v[k][2];
-          throw std::logic_error("z-buffer oracle: a vertex lost");
-        };
-        Rational z = la * depth_of(p[0]) + lb * depth_of(p[1]) + lc * depth_of(p[2]) + offset;
-        z = std::clamp(z, Rational(0), Rational(1));
-        const Rational d = stored(z);
-        Rational& cell = out.depth[j * width + i];
-        ++out.fragments;
-        out.ties += d == cell;
-        if (lequal ? d <= cell : d < cell) cell = d, out.ids[j * width + i] = t.id, ++out.passed;
+    for (const Pixel& px : window_samples(t.v, width, height)) {
+      const std::int64_t i = px.x, j = px.y;
+      const K::Point_2 s(i, j);
+      // Barycentric weights: each the area opposite its vertex over the whole.
+      const Rational la = oracle::r(CGAL::area(s, p[1], p[2])) / area, lb = oracle::r(CGAL::area(p[0], s, p[2])) / area;
+      const Rational lc = 1 - la - lb;
+      auto depth_of = [&](const K::Point_2& q) {
+        for (int k = 0; k < 3; ++k)
+          if (t.v[k][0] == oracle::r(q.x()) && t.v[k][1] == oracle::r(q.y())) return t.v[k][2];
+        throw std::logic_error("z-buffer oracle: a vertex lost");
+      };
+      Rational z = la * depth_of(p[0]) + lb * depth_of(p[1]) + lc * depth_of(p[2]) + offset;
+      z = std::clamp(z, Rational(0), Rational(1));
+      const Rational d = stored(z);
+      Rational& cell = out.depth[j * width + i];
+      ++out.fragments;
+      out.ties += d == cell;
+      if (lequal ? d <= cell : d < cell) cell = d, out.ids[j * width + i] = t.id, ++out.passed;
       }
   }
   return out;
@@ -232,9 +244,7 @@ std::vector<std::array<Rational, 3>> blend(std::int64_t width, std::int64_t heig
   // Each triangle's covered samples once, then each pixel on its own.
   std::vector<std::vector<Pixel>> covered(tris.size());
   for (std::size_t t = 0; t < tris.size(); ++t) {
-    std::array<Vec2<Rational>, 3> xy;
-    for (int k = 0; k < 3; ++k) xy[k] = {tris[t].v[k][0], tris[t].v[k][1]};
-    covered[t] = oracle::triangle_samples(xy);
+    covered[t] = window_samples(tris[t].v, width, height);
     std::sort(covered[t].begin(), covered[t].end());
   }
   std::vector<std::array<Rational, 3>> out(width * height, background);

@@ -56,6 +56,11 @@ std::array<Plane, 6> planes(const Camera& cam);
 Cull cull_sphere(const Camera& cam, const std::array<Rational, 3>& c, const Rational& r);
 Cull cull_corners(const Camera& cam, const std::array<std::array<Rational, 3>, 8>& corners);
 
+// The samples of a width x height window a window-space triangle covers: every sample of its box
+// in the window tested by CGAL's orientation with the fill family's tie rule (a sample on an edge
+// is covered on a left or bottom edge). None for a triangle of zero area.
+std::vector<Pixel> window_samples(const std::array<std::array<Rational, 3>, 3>& v, std::int64_t width, std::int64_t height);
+
 // The z-buffer by brute force: for each triangle in order, every sample of its box in the window
 // is tested for cover (CGAL's orientation with the fill family's tie rule: a sample on an edge is
 // covered on a left or bottom edge), its depth found from barycentric weights, offset by the slope
@@ -73,8 +78,8 @@ struct DepthImage {
 DepthImage z_buffer(std::int64_t width, std::int64_t height, const std::vector<DepthTriangle>& tris, int bits, bool lequal,
                     const Rational& clear);
 
-// Blending by brute force, per pixel: the fragments of the triangles that cover it (the fill
-// oracle's samples), depth by the fill oracle's linear interpolation, in the order given, through
+// Blending by brute force, per pixel: the fragments of the triangles that cover it
+// (window_samples), depth by the fill oracle's linear interpolation, in the order given, through
 // GL_LESS and the over operator.
 struct BlendTriangle {
   std::array<std::array<Rational, 3>, 3> v;

@@ -22,7 +22,7 @@ struct TriangleEdge {
   X(orient, "area2 <- (b - a) x (c - a); if area2 = 0: stop; if area2 < 0: swap b, c   -- counter-clockwise") \
   X(edges, "for each edge p -> q: E(s) = (q - p) x (s - p), dE/di = -(q_y - p_y), dE/dj = q_x - p_x") \
   X(ties, "    on_edge_inside <- q_y < p_y, or q_y = p_y and q_x > p_x   -- a left or a bottom edge") \
-  X(box, "box <- the samples between the vertices' least and greatest x and y") \
+  X(box, "box <- the samples between the vertices' least and greatest x and y, inside the scissor box") \
   X(rows, "for each row j of the box:") \
   X(row_start, "    E_k <- E_k at the row's first sample, for k = 0, 1, 2") \
   X(cols, "    for each column i of the box:") \
@@ -35,9 +35,15 @@ struct TriangleEdge {
 
 // Vertices in units of 1/unit pixel: sample (i, j) is the point (i unit, j unit). unit = 1 except
 // in fixed point. Precondition (validated): every edge function fits the number type.
+// scissor: the samples [i0, i1] x [j0, j1] a raster target holds (GL's viewport or scissor box);
+// samples outside it are never visited. Unbounded by default.
+struct SampleBox {
+  std::int64_t i0 = INT64_MIN / 4, i1 = INT64_MAX / 4, j0 = INT64_MIN / 4, j1 = INT64_MAX / 4;
+};
 template <class Num> struct EdgeTriangle {
   std::array<Vec2<Num>, 3> v;
   Num unit = Num(1);
+  SampleBox scissor{};
 };
 
 inline constexpr const char* kEdgeNames[] = {"E0", "E1", "E2"};
@@ -82,7 +88,8 @@ void triangle_edge(EdgeTriangle<Num> tri, std::vector<Pixel>& out, Probe& probe)
   // The box's samples: ceil(min / unit) .. floor(max / unit) in each axis.
   auto lo = [&](int axis) { return num::ceil_div(std::min({a[axis], b[axis], c[axis]}), tri.unit); };
   auto hi = [&](int axis) { return num::floor_div(std::max({a[axis], b[axis], c[axis]}), tri.unit); };
-  const std::int64_t i0 = lo(0), i1 = hi(0), j0 = lo(1), j1 = hi(1);
+  const std::int64_t i0 = std::max(lo(0), tri.scissor.i0), i1 = std::min(hi(0), tri.scissor.i1);
+  const std::int64_t j0 = std::max(lo(1), tri.scissor.j0), j1 = std::min(hi(1), tri.scissor.j1);
   if constexpr (Probe::on) probe.step(L::box, StepKind::init).idx("i0", i0).idx("i1", i1).idx("j0", j0).idx("j1", j1);
   for (std::int64_t j = j0; j <= j1; ++j) {
     // E_k(s) = (q - p) x (s - p) at s = (i0, j) unit.

@@ -53,8 +53,7 @@ BlendImage<Num> blend_pass(std::int64_t width, std::int64_t height, const std::v
     const DepthPlane<Num> plane = depth_plane(tri.v);
     if constexpr (Probe::on) probe.step(L::triangle, StepKind::advance).idx("t", std::int64_t(t)).num("alpha", tri.alpha).colour("C_t", tri.rgb);
     if (plane.area2 == Num(0)) continue;  // covers no sample
-    for (const Pixel& s : covered_samples(tri.v)) {
-      if (s.x < 0 || s.y < 0 || s.x >= width || s.y >= height) continue;  // outside the window
+    for (const Pixel& s : covered_samples(tri.v, width, height)) {
       const std::size_t k = static_cast<std::size_t>(s.y * width + s.x);
       const Num z = plane.at(Num(s.x), Num(s.y));
       const bool pass = z < depth[k];

@@ -36,7 +36,7 @@ struct ZBuffer {
   X(clear, "depth[all] <- the clear depth (in fixed point: round(clear M), M = 2^bits - 1); id[all] <- none") \
   X(plane, "for each triangle t in order: z(x, y) <- the plane through its vertices (zx = dz/dx, zy = dz/dy)") \
   X(offset, "o <- factor max(|zx|, |zy|) + units r        -- glPolygonOffset; r = 1/M, or 2^-24 without bits") \
-  X(cover, "S <- the samples triangle-edge covers, with its tie rule") \
+  X(cover, "S <- the samples of the window triangle-edge covers, with its tie rule") \
   X(fragment, "for each sample (i, j) of S: z <- z(i, j) + o, clamped to [0, 1]; d <- round(z M) in fixed point, else z") \
   X(test, "pass <- d < depth[i, j] (GL_LESS) or d <= depth[i, j] (GL_LEQUAL)") \
   X(write, "if pass: depth[i, j] <- d; id[i, j] <- t") \
@@ -69,10 +69,9 @@ DepthBuffer<Num> z_buffer(std::int64_t width, std::int64_t height, const std::ve
     }
     const Num o = Num(t.factor * std::max(num::abs(zx), num::abs(zy)) + t.units * r);
     if constexpr (Probe::on) probe.step(L::offset, StepKind::advance).num("o", o);
-    const std::vector<Pixel> samples = covered_samples(t.v);
+    const std::vector<Pixel> samples = covered_samples(t.v, width, height);
     if constexpr (Probe::on) probe.step(L::cover, StepKind::advance).idx("samples", std::int64_t(samples.size()));
     for (const Pixel& s : samples) {
-      if (s.x < 0 || s.y < 0 || s.x >= width || s.y >= height) continue;  // outside the window: scissored
       const Num z = std::clamp(Num(plane.at(Num(s.x), Num(s.y)) + o), Num(0), Num(1));
       const Num d = stored(z);
       Num& cell = buf.depth[s.y * width + s.x];

@@ -2,6 +2,7 @@
 #include "pipeline/camera_input.hpp"
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include "core/functions.hpp"
 
 namespace sw::pipespec {
@@ -101,6 +102,43 @@ double window_box_samples(const std::array<std::array<Rational, 3>, 3>& v, std::
     return std::max(0.0, h - l + 1);
   };
   return span(0, width) * span(1, height);
+}
+
+WindowTriangles parse_window_triangles(const Json& j, std::size_t max_triangles, bool with_offset, bool distinct_ids) {
+  WindowTriangles out;
+  const Json& size = require(j, "size", "input");
+  if (!size.is_array() || size.size() != 2) throw InputError("input.size: expected [width, height]");
+  out.width = parse_integer(size[0], "input.size[0]", 1, kMaxWindowSide);
+  out.height = parse_integer(size[1], "input.size[1]", 1, kMaxWindowSide);
+  const Json& ts = require(j, "triangles", "input");
+  if (!ts.is_array() || ts.empty() || ts.size() > max_triangles)
+    throw InputError("input.triangles: expected a list of 1 to " + std::to_string(max_triangles) + " triangles");
+  const std::string shape = with_offset ? R"({"v": [[x,y,z],[x,y,z],[x,y,z]], "id": k, "offset": [factor, units]})" : R"({"v": [[x,y,z],[x,y,z],[x,y,z]], "id": k})";
+  std::set<std::int64_t> ids;
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const std::string what = "input.triangles[" + std::to_string(i) + "]";
+    const Json& t = ts[i];
+    if (!t.is_object()) throw InputError(what + ": expected " + shape);
+    if (with_offset) only_keys_optional(t, {"v"}, {"id", "offset"}, what);
+    else only_keys_optional(t, {"v"}, {"id"}, what);
+    pipeline_oracle::DepthTriangle d;
+    if (!t["v"].is_array() || t["v"].size() != 3) throw InputError(what + ".v: expected three vertices [x, y, z]");
+    for (int k = 0; k < 3; ++k) {
+      const std::string w = what + ".v[" + std::to_string(k) + "]";
+      d.v[k] = arr_of(parse_coord3(t["v"][k], w));
+      for (int a = 0; a < 2; ++a) check_bound(d.v[k][a], kWindowBound, w + "[" + std::to_string(a) + "]");
+      if (d.v[k][2] < 0 || d.v[k][2] > 1) throw InputError(w + "[2]: depth " + d.v[k][2].get_str() + " is outside [0, 1] (clip first)");
+    }
+    d.id = t.contains("id") ? parse_integer(t["id"], what + ".id", 0, 1 << 20) : std::int64_t(i);
+    if (distinct_ids && !ids.insert(d.id).second) throw InputError(what + ".id: " + std::to_string(d.id) + " is already another triangle's");
+    if (t.contains("offset")) {
+      const Json& o = t["offset"];
+      if (!o.is_array() || o.size() != 2) throw InputError(what + ".offset: expected [factor, units] (glPolygonOffset)");
+      d.factor = parse_coord(o[0], what + ".offset[0]"), d.units = parse_coord(o[1], what + ".offset[1]");
+    }
+    out.tris.push_back(d);
+  }
+  return out;
 }
 
 CameraInput CameraGen::next(const Rational& distance, const Rational& n, const Rational& f, std::int64_t w, std::int64_t h) {

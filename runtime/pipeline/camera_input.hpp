@@ -12,6 +12,7 @@
 #include "core/number.hpp"
 #include "input.hpp"
 #include "pipeline/camera.hpp"
+#include "pipeline_oracle.hpp"
 
 namespace sw::pipespec {
 
@@ -51,6 +52,19 @@ template <class Num> pipe::Camera<Num> camera_as(const pipe::Camera<Rational>& c
   o.view = {n(c.view.x), n(c.view.y), n(c.view.w), n(c.view.h), n(c.view.dn), n(c.view.df)};
   return o;
 }
+
+// A window and the triangles drawn in it, in window coordinates, as the raster algorithms take them:
+//   "size": [width, height] (1 to kMaxWindowSide each),
+//   "triangles": [{"v": [[x,y,z], [x,y,z], [x,y,z]], "id": k, "offset": [factor, units]}, ...]
+// with |x|, |y| <= kWindowBound and depth z in [0, 1]; "offset" (glPolygonOffset) only where
+// with_offset, ids (default: the index) distinct where distinct_ids. The caller checks j's keys.
+inline constexpr std::int64_t kMaxWindowSide = 512;
+inline constexpr double kWindowBound = 1e5;
+struct WindowTriangles {
+  std::int64_t width = 0, height = 0;
+  std::vector<pipeline_oracle::DepthTriangle> tris;
+};
+WindowTriangles parse_window_triangles(const Json& j, std::size_t max_triangles, bool with_offset, bool distinct_ids);
 
 // j[key]: a list of 1 to kMaxPrimitives items (`shape` names them in the error).
 const Json& primitive_list(const Json& j, const char* key, const char* shape);

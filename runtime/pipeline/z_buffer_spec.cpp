@@ -11,9 +11,7 @@ namespace {
 
 using namespace pipespec;
 
-inline constexpr std::int64_t kMaxSide = 512;
 inline constexpr std::size_t kMaxTriangles = 1024;
-inline constexpr double kWindowBound = 1e5;  // |x|, |y| of a vertex
 
 struct ZInput {
   std::int64_t width = 0, height = 0;
@@ -37,10 +35,8 @@ ZInput parse_z(const Json& j) {
   if (!j.is_object()) throw InputError("input: expected an object with size and triangles");
   only_keys_optional(j, {"size", "triangles"}, {"depth_bits", "depth_func", "clear_depth"}, "input");
   ZInput in;
-  const Json& size = j["size"];
-  if (!size.is_array() || size.size() != 2) throw InputError("input.size: expected [width, height]");
-  in.width = parse_integer(size[0], "input.size[0]", 1, kMaxSide);
-  in.height = parse_integer(size[1], "input.size[1]", 1, kMaxSide);
+  const WindowTriangles w = parse_window_triangles(j, kMaxTriangles, true, false);
+  in.width = w.width, in.height = w.height, in.tris = w.tris;
   if (j.contains("depth_bits")) {
     in.bits = static_cast<int>(parse_integer(j["depth_bits"], "input.depth_bits", 0, 24));
     if (in.bits != 0 && in.bits != 16 && in.bits != 24) throw InputError("input.depth_bits: expected 16 or 24 (or 0: depth in the number type)");
@@ -53,30 +49,6 @@ ZInput parse_z(const Json& j) {
   if (j.contains("clear_depth")) {
     in.clear = parse_coord(j["clear_depth"], "input.clear_depth");
     if (in.clear < 0 || in.clear > 1) throw InputError("input.clear_depth: " + in.clear.get_str() + " is outside [0, 1]");
-  }
-  const Json& ts = require(j, "triangles", "input");
-  if (!ts.is_array() || ts.empty() || ts.size() > kMaxTriangles)
-    throw InputError("input.triangles: expected a list of 1 to " + std::to_string(kMaxTriangles) + " triangles");
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    const std::string what = "input.triangles[" + std::to_string(i) + "]";
-    const Json& t = ts[i];
-    if (!t.is_object()) throw InputError(what + ": expected {\"v\": [[x,y,z],[x,y,z],[x,y,z]], \"id\": k, \"offset\": [factor, units]}");
-    only_keys_optional(t, {"v"}, {"id", "offset"}, what);
-    pipeline_oracle::DepthTriangle d;
-    if (!t["v"].is_array() || t["v"].size() != 3) throw InputError(what + ".v: expected three vertices [x, y, z]");
-    for (int k = 0; k < 3; ++k) {
-      const std::string w = what + ".v[" + std::to_string(k) + "]";
-      d.v[k] = arr_of(parse_coord3(t["v"][k], w));
-      for (int a = 0; a < 2; ++a) check_bound(d.v[k][a], kWindowBound, w + "[" + std::to_string(a) + "]");
-      if (d.v[k][2] < 0 || d.v[k][2] > 1) throw InputError(w + "[2]: depth " + d.v[k][2].get_str() + " is outside [0, 1] (clip first)");
-    }
-    d.id = t.contains("id") ? parse_integer(t["id"], what + ".id", 0, 1 << 20) : std::int64_t(i);
-    if (t.contains("offset")) {
-      const Json& o = t["offset"];
-      if (!o.is_array() || o.size() != 2) throw InputError(what + ".offset: expected [factor, units] (glPolygonOffset)");
-      d.factor = parse_coord(o[0], what + ".offset[0]"), d.units = parse_coord(o[1], what + ".offset[1]");
-    }
-    in.tris.push_back(d);
   }
   return in;
 }

@@ -123,7 +123,7 @@ TEST_CASE("z-buffer: every exact step against closed forms, the image against th
         CHECK(o == t->factor * std::max(zx, zy) + t->units * r);
       } else if (line == "cover") {
         const std::array<Vec2<Rational>, 3> xy{Vec2<Rational>{t->v[0][0], t->v[0][1]}, {t->v[1][0], t->v[1][1]}, {t->v[2][0], t->v[2][1]}};
-        CHECK(sv["samples"] == Rational(std::int64_t(oracle::triangle_samples(xy).size())));
+        CHECK(sv["samples"] == Rational(std::int64_t(po::window_samples(t->v, sc.w, sc.h).size())));
       } else if (line == "fragment") {
         fi = sv["i"].get_num().get_si(), fj = sv["j"].get_num().get_si();
         const std::array<Vec2<Rational>, 3> xy{Vec2<Rational>{t->v[0][0], t->v[0][1]}, {t->v[1][0], t->v[1][1]}, {t->v[2][0], t->v[2][1]}};
