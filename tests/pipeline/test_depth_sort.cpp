@@ -271,11 +271,16 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
         }
       } else if (line == "pick") {
         P_id = sv["P"].get_num().get_si();
-        P = poly_of(g.take(GeoKind::polygon).values, *by_id.at(P_id));
+        const GeoItem& outline = g.take(GeoKind::polygon);
+        CHECK(outline.label == "P");
+        CHECK(outline.life == "replace");  // shown while P is painted
+        P = poly_of(outline.values, *by_id.at(P_id));
         CHECK(sv["vertices"] == Rational(std::int64_t(P.v.size())));
       } else if (line == "each") {
         Q_id = sv["Q"].get_num().get_si();
-        Q_item = g.take(GeoKind::polygon).values;
+        const GeoItem& outline = g.take(GeoKind::polygon);
+        CHECK(outline.label == "Q");
+        Q_item = outline.values;
         Q = poly_of(Q_item, *by_id.at(Q_id));
         Rational near = P.v[0][2], far = Q.v[0][2];
         for (const V3& v : P.v) near = std::min(near, v[2]);
