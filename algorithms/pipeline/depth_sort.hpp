@@ -206,7 +206,7 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
       // polygons cut by each other's planes can share their projection, and no cut parts them).
       const auto choice = q_first && !Q.moved ? std::nullopt : choose_cut(P, Q);
       const bool move = q_first && (!choice || !Q.moved) && img.moves < max_moves;
-      if constexpr (Probe::on) probe.step(L::move, StepKind::decide).idx("q_first", q_first).idx("moved_before", Q.moved).idx("cut", choice.has_value()).idx("move", move);
+      if constexpr (Probe::on) probe.step(L::move, StepKind::decide).idx("q_first", q_first).idx("moved_before", Q.moved).idx("can_cut", choice.has_value()).idx("move", move);
       if (move) {
         SortPolygon<Num> q = Q;
         q.moved = true;

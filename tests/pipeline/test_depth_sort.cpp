@@ -319,7 +319,7 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
           for (std::size_t e = 0; e < A.v.size(); ++e) cut = cut || line_crosses(A.v[e], A.v[(e + 1) % A.v.size()], B);
         }
         const bool looked = !(q_first && !before);  // the cut is sought only where it may be used
-        CHECK(sv["cut"] == Rational(looked && cut));
+        CHECK(sv["can_cut"] == Rational(looked && cut));
         const bool move = q_first && (!before || !cut);
         CHECK(sv["move"] == Rational(move));
         if (move) moved.insert({Q_id, Q_item}), ++moves;
