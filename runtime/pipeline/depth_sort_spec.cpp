@@ -83,7 +83,7 @@ struct DepthSortSpec {
   static constexpr std::array views{View::plane2d, View::table};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // Three sticks over a 24 x 24 window, each lying over the next where they cross: no order of
-  // the three paints them right, and one is split.
+  // the three paints them right, and exact cuts three times.
   static inline const std::string example =
       R"({"size":[24,24],"triangles":[{"v":[[1,6,"1/5"],[1,9,"1/5"],[23,7,"4/5"]]},)"
       R"({"v":[[17,1,"1/5"],[14,1,"1/5"],[16,23,"4/5"]]},{"v":[[23,17,"1/5"],[20,21,"1/5"],[3,3,"4/5"]]}]})";

@@ -35,6 +35,20 @@ inline void check_vec(StepValues& sv, const std::string& name, const V3& want) {
   for (int k = 0; k < 3; ++k) CHECK(sv[name + "." + "xyz"[k]] == want[k]);
 }
 
+// An input's window-space triangles ("triangles" of the z-buffer, depth-sort), read exactly.
+inline std::vector<po::DepthTriangle> window_triangles_of(const Json& j) {
+  std::vector<po::DepthTriangle> out;
+  for (const Json& t : j["triangles"]) {
+    po::DepthTriangle d;
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) d.v[k][a] = q_of(t["v"][k][a]);
+    d.id = t.value("id", std::int64_t(out.size()));
+    if (t.contains("offset")) d.factor = q_of(t["offset"][0]), d.units = q_of(t["offset"][1]);
+    out.push_back(d);
+  }
+  return out;
+}
+
 // The inputs of one algorithm: its example, its corpus cases and `random` seeded variations of
 // the example's camera made by `vary`.
 inline std::vector<Json> inputs_of(std::string_view id) {

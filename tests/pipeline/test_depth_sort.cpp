@@ -26,18 +26,7 @@ struct Scene {
   std::vector<po::DepthTriangle> tris;
 };
 
-Scene scene_of(const Json& j) {
-  Scene s{j["size"][0].get<std::int64_t>(), j["size"][1].get<std::int64_t>(), {}};
-  std::int64_t i = 0;
-  for (const Json& t : j["triangles"]) {
-    po::DepthTriangle d;
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) d.v[k][a] = q_of(t["v"][k][a]);
-    d.id = t.value("id", i++);
-    s.tris.push_back(d);
-  }
-  return s;
-}
+Scene scene_of(const Json& j) { return {j["size"][0].get<std::int64_t>(), j["size"][1].get<std::int64_t>(), window_triangles_of(j)}; }
 
 Json json_of(const Scene& s) {
   Json tris = Json::array();

@@ -35,15 +35,7 @@ ZScene scene_of(const Json& j) {
   s.bits = j.value("depth_bits", 0);
   s.lequal = j.value("depth_func", std::string("less")) == "lequal";
   if (j.contains("clear_depth")) s.clear = q_of(j["clear_depth"]);
-  std::int64_t i = 0;
-  for (const Json& t : j["triangles"]) {
-    po::DepthTriangle d;
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) d.v[k][a] = q_of(t["v"][k][a]);
-    d.id = t.value("id", i++);
-    if (t.contains("offset")) d.factor = q_of(t["offset"][0]), d.units = q_of(t["offset"][1]);
-    s.tris.push_back(d);
-  }
+  s.tris = window_triangles_of(j);
   return s;
 }
 
