@@ -2,8 +2,8 @@
 # Installs the Debian packages stepwise needs (only those missing), then configures and builds.
 # Idempotent: a second run installs nothing and rebuilds only what changed.
 # Usage: scripts/setup.sh [--app] [build-dir] [extra cmake args...]
-#   --app  only what the app and the CLI need: their packages, and the targets stepwise and
-#          stepwise-gui (scripts/run.sh, the fast first picture). Without it: every package (tests,
+#   --app  only what the app and the CLI need: their packages, and the targets stepwise (which
+#          brings stepwise-gl, its renderer) and stepwise-gui (scripts/run.sh, the fast first picture). Without it: every package (tests,
 #          peers, benches, the sanitizer job's clang) and every target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
