@@ -31,8 +31,9 @@ struct PaintedImage {
   std::int64_t width = 0, height = 0;
   std::vector<std::int64_t> id;  // -1: nothing painted; kTie
   std::int64_t painted = 0, moves = 0, splits = 0, ties = 0;
+  std::int64_t tests = 0;        // pairs (P, Q) whose depth ranges overlap, compared
   std::int64_t wrong = 0;        // samples where a farther surface was painted over a nearer one
-  bool gave_up = false;          // the split bound was reached: the rest painted in list order
+  bool gave_up = false;          // a bound was reached: the rest painted in list order
 };
 
 struct DepthSort {
@@ -152,10 +153,12 @@ template <class Num> std::vector<Pixel> polygon_samples(const SortPolygon<Num>& 
 
 }  // namespace depth_sort_detail
 
-// max_splits and max_moves bound the work; reaching one sets gave_up. Ids are expected distinct.
+// max_tests bounds the pairs compared, and so the steps: every move and cut follows a test, and
+// each round paints, moves or cuts. max_splits bounds the list, and so each round's scan of it.
+// Reaching either sets gave_up. Ids are expected distinct.
 template <NumberType Num, StepProbe Probe = NoProbe>
 PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vector<std::array<Vec3<Num>, 3>>& tris,
-                        const std::vector<std::int64_t>& ids, std::int64_t max_splits, std::int64_t max_moves, Probe& probe) {
+                        const std::vector<std::int64_t>& ids, std::int64_t max_tests, std::int64_t max_splits, Probe& probe) {
   using L = DepthSort;
   using namespace depth_sort_detail;
   PaintedImage img{width, height, std::vector<std::int64_t>(width * height, -1)};
@@ -174,7 +177,7 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
   auto by_farthest = [&](const SortPolygon<Num>& a, const SortPolygon<Num>& b) { return farthest(a) > farthest(b); };
   std::stable_sort(list.begin(), list.end(), by_farthest);
   if constexpr (Probe::on) probe.step(L::sort, StepKind::init).idx("polygons", std::int64_t(list.size()));
-  // Each round paints one polygon (at most n + max_splits), moves one or splits one.
+  // Each round paints one polygon, or compares at least one pair and moves or cuts one.
   while (!list.empty()) {
     const SortPolygon<Num>& P = list.front();
     if constexpr (Probe::on) probe.step(L::pick, StepKind::init).idx("P", P.id).idx("vertices", std::int64_t(P.v.size())).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(flat(P))).label("P").replace();
@@ -184,6 +187,11 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
       const SortPolygon<Num>& Q = list[k];
       const auto pz = range(P, 2), qz = range(Q, 2);
       if (!(qz[1] > pz[0])) continue;
+      if (img.tests == max_tests) {
+        img.gave_up = true;
+        break;
+      }
+      ++img.tests;
       if constexpr (Probe::on) probe.step(L::each, StepKind::advance).idx("Q", Q.id).num("P.near", pz[0]).num("Q.far", qz[1]).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(flat(Q))).label("Q").replace();
       const auto px = range(P, 0), qx = range(Q, 0), py = range(P, 1), qy = range(Q, 1);
       const bool apart = px[1] <= qx[0] || qx[1] <= px[0] || py[1] <= qy[0] || qy[1] <= py[0];
@@ -205,7 +213,7 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
       // A second move may close a cycle: cut instead where a cut exists (pieces of two
       // polygons cut by each other's planes can share their projection, and no cut parts them).
       const auto choice = q_first && !Q.moved ? std::nullopt : choose_cut(P, Q);
-      const bool move = q_first && (!choice || !Q.moved) && img.moves < max_moves;
+      const bool move = q_first && (!choice || !Q.moved);
       if constexpr (Probe::on) probe.step(L::move, StepKind::decide).idx("q_first", q_first).idx("moved_before", Q.moved).idx("can_cut", choice.has_value()).idx("move", move);
       if (move) {
         SortPolygon<Num> q = Q;
@@ -250,7 +258,7 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
     list.erase(list.begin());
   }
   for (std::int64_t v : img.id) img.ties += v == kTie;
-  if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("painted", img.painted).idx("splits", img.splits).idx("ties", img.ties);
+  if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("painted", img.painted).idx("splits", img.splits).idx("tests", img.tests).idx("ties", img.ties);
   return img;
 }
 

@@ -83,6 +83,12 @@ std::vector<Json> scenes() {
       }
     out.push_back(json_of(s));
   }
+  // Two of sixteen large triangles, nearly every pair crossing: hundreds of cuts.
+  for (int k = 0; k < 2; ++k) {
+    Scene s{40, 32, {}};
+    for (int i = 0; i < 16; ++i) s.tris.push_back(tri({{{r(-8, 48), r(-8, 40), z()}, {r(-8, 48), r(-8, 40), z()}, {r(-8, 48), r(-8, 40), z()}}}, i));
+    out.push_back(json_of(s));
+  }
   return out;
 }
 
@@ -206,10 +212,10 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
     std::map<std::int64_t, const po::DepthTriangle*> by_id;
     for (const auto& t : s.tris) tris.push_back({vec(t.v[0]), vec(t.v[1]), vec(t.v[2])}), ids.push_back(t.id), by_id[t.id] = &t;
     Recorder<Rational> rec;
-    const pipe::PaintedImage img = pipe::depth_sort<Rational>(s.w, s.h, tris, ids, 4 * std::int64_t(tris.size()) + 64, 1 << 20, rec);
+    const pipe::PaintedImage img = pipe::depth_sort<Rational>(s.w, s.h, tris, ids, std::int64_t(1) << 40, std::int64_t(1) << 40, rec);
     std::map<std::pair<std::int64_t, Pixel>, int> times;  // (triangle, sample): how often painted
     std::map<Pixel, Rational> depth;                      // the depth painted last at each sample
-    std::int64_t P_id = -1, Q_id = -1;
+    std::int64_t P_id = -1, Q_id = -1, each_steps = 0;
     Poly P, Q;
     std::vector<Rational> Q_item;
     std::set<std::pair<std::int64_t, std::vector<Rational>>> moved;  // polygons moved to the front once
@@ -266,6 +272,7 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
         P = poly_of(outline.values, *by_id.at(P_id));
         CHECK(sv["vertices"] == Rational(std::int64_t(P.v.size())));
       } else if (line == "each") {
+        ++each_steps;
         Q_id = sv["Q"].get_num().get_si();
         const GeoItem& outline = g.take(GeoKind::polygon);
         CHECK(outline.label == "Q");
@@ -316,6 +323,7 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
       } else if (line == "done") {
         CHECK(sv["painted"] == Rational(img.painted));
         CHECK(sv["splits"] == Rational(img.splits));
+        CHECK(sv["tests"] == Rational(each_steps));  // one test per pair compared
         CHECK(sv["ties"] == Rational(img.ties));
       } else {
         FAIL("unexpected line " << line);
@@ -331,6 +339,7 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
     }
     CHECK(times.empty());
     CHECK(img.wrong == 0);
+    CHECK_FALSE(img.gave_up);
   }
   CHECK(painted >= 5000);
   CHECK(split_steps >= 20);
@@ -348,7 +357,8 @@ TEST_CASE("depth-sort: double's splits miss the cutting plane so crossing triang
   // In double the cut's new vertices are rounded off the plane: each piece still crosses it.
   const Json dbl = find_algorithm("depth-sort").open(x, Numeric::f64).run();
   CHECK(dbl["gave_up"] == true);
-  CHECK(dbl["splits"] == 4 * 2 + 64);
+  CHECK(dbl["splits"] == 4 * 2 * 2 + 64);  // the bound on cuts, reached
+  CHECK(dbl["tests"].get<std::int64_t>() > 1000);
   CHECK(dbl["wrong"].get<std::int64_t>() > 0);
 }
 
