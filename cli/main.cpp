@@ -311,13 +311,15 @@ bool draws(int argc, char** argv) {
   return false;
 }
 
-// Runs the same command line in the renderer's build beside this executable; returns only on failure.
+// Runs the same command line in the renderer's build beside this executable (found from
+// /proc/self/exe, else from argv[0]); returns only on failure.
 int run_in_renderer(char** argv) {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::filesystem::path renderer = (ec ? std::filesystem::path(".") : exe.parent_path()) / SW_RENDERER_EXE;
+  const std::filesystem::path renderer = (ec ? std::filesystem::path(argv[0]) : exe).parent_path() / SW_RENDERER_EXE;
   execv(renderer.c_str(), argv);
-  std::cerr << "stepwise: error: this command draws with OSMesa in " << renderer.string() << ", which cannot run: " << std::strerror(errno) << '\n';
+  std::cerr << "stepwise: error: cannot run " << renderer.string() << ", the build with the renderer that draws and lists every command: "
+            << std::strerror(errno) << '\n';
   return 2;
 }
 

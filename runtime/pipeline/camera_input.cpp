@@ -130,7 +130,9 @@ WindowTriangles parse_window_triangles(const Json& j, std::size_t max_triangles,
       if (d.v[k][2] < 0 || d.v[k][2] > 1) throw InputError(w + "[2]: depth " + d.v[k][2].get_str() + " is outside [0, 1] (clip first)");
     }
     d.id = t.contains("id") ? parse_integer(t["id"], what + ".id", 0, 1 << 20) : std::int64_t(i);
-    if (distinct_ids && !ids.insert(d.id).second) throw InputError(what + ".id: " + std::to_string(d.id) + " is already another triangle's");
+    if (distinct_ids && !ids.insert(d.id).second)
+      throw InputError(t.contains("id") ? what + ".id: " + std::to_string(d.id) + " is already another triangle's"
+                                        : what + ": its default id " + std::to_string(d.id) + " (its index) is already another triangle's");
     if (t.contains("offset")) {
       const Json& o = t["offset"];
       if (!o.is_array() || o.size() != 2) throw InputError(what + ".offset: expected [factor, units] (glPolygonOffset)");

@@ -245,6 +245,12 @@ TEST_CASE("depth-sort: every step exact and a split triangle's pieces cover its 
         for (int piece = 0; piece < 2; ++piece) {
           const GeoItem& poly = g.take(GeoKind::polygon);
           CHECK(poly.values.size() >= 6);
+          Rational area = 0;  // twice the piece's signed area: a cut crosses, so neither piece is flat
+          for (std::size_t k = 0; k + 1 < poly.values.size(); k += 2) {
+            const std::size_t next = (k + 2) % poly.values.size();
+            area += poly.values[k] * poly.values[next + 1] - poly.values[next] * poly.values[k + 1];
+          }
+          CHECK(sgn(area) == turn);
           for (std::size_t k = 0; k + 1 < poly.values.size(); k += 2)
             for (int e = 0; e < 3; ++e) {
               const Vec2<Rational>&a = tri[e], &b = tri[(e + 1) % 3];
