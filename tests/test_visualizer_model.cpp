@@ -173,6 +173,31 @@ TEST_CASE("visualizer model: plot order, cell lookup and state with changes", "[
   CHECK(long_line->find_kind(s, StepKind::done, false) == std::nullopt);
 }
 
+TEST_CASE("visualizer model: a vector's difference between two runs is its largest component's", "[visualizer][model]") {
+  // transform with the near plane at 1/100: float's window depth differs from exact's in z only.
+  const Json in = parse_json_text(R"({"camera":{"eye":[0,0,5],"target":[0,0,0],"up":[0,1,0]},"projection":{"perspective":[-0.01,0.01,-0.01,0.01,0.01,100]},"viewport":[0,0,640,480],"points":[[0,0,-90]]})", "t");
+  const auto f = record_model(find_algorithm("transform"), in, Numeric::f32), e = record_model(find_algorithm("transform"), in, Numeric::exact);
+  auto var = [](const std::vector<VarState>& st, std::string_view n) {
+    for (const VarState& v : st)
+      if (v.name == n) return v;
+    FAIL("no variable " << n);
+    return VarState{};
+  };
+  const VarState a = var(f->state_at(f->last()), "win"), b = var(e->state_at(e->last()), "win");
+  REQUIRE(a.parts.size() == 3);
+  REQUIRE(b.parts.size() == 3);
+  CHECK(a.parts[0] == b.parts[0]);  // x and y agree: the first component alone would say 0
+  const double dz = std::fabs(a.parts[2] - b.parts[2]);
+  CHECK(dz > 0);
+  CHECK(value_difference(a, b) == std::max({std::fabs(a.parts[0] - b.parts[0]), std::fabs(a.parts[1] - b.parts[1]), dz}));
+  VarState shorter = b;
+  shorter.parts.pop_back();
+  CHECK(value_difference(a, shorter) == std::nullopt);
+  VarState nan = b;
+  nan.parts[1] = std::nan("");
+  CHECK(std::isnan(*value_difference(a, nan)));
+}
+
 TEST_CASE("visualizer model: geometry lifetimes keep, replace and end with the step", "[visualizer][model]") {
   // ray-box: the ray and the box are kept from step 0; each clip step keeps its axis' slab and
   // replaces the running [t_near, t_far]; the hit point lives on its own step only.

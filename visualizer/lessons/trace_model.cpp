@@ -160,6 +160,15 @@ std::vector<std::uint32_t> TraceModel::visible_items(std::size_t step) const {
   return out;
 }
 
+std::optional<double> value_difference(const VarState& a, const VarState& b) {
+  if (a.parts.empty() && b.parts.empty()) return std::fabs(a.value - b.value);
+  if (a.parts.size() != b.parts.size()) return std::nullopt;
+  double most = 0;
+  for (std::size_t k = 0; k < a.parts.size(); ++k)
+    if (const double d = std::fabs(a.parts[k] - b.parts[k]); std::isnan(d) || d > most) most = d;  // NaN stays
+  return most;
+}
+
 std::vector<VarState> TraceModel::state_at(std::size_t step) const {
   std::vector<VarState> out;
   if (!size()) return out;
@@ -179,6 +188,8 @@ std::vector<VarState> TraceModel::state_at(std::size_t step) const {
     vs.shape = v.shape;
     if (v.shape == VarShape::colour)
       for (std::uint32_t c = 0; c < 3; ++c) vs.rgb[c] = static_cast<float>(t.component_double(v, c));
+    if (v.shape != VarShape::scalar)
+      for (std::uint32_t c = 0; c < v.count; ++c) vs.parts.push_back(t.component_double(v, c));
     out.push_back(std::move(vs));
   }
   return out;

@@ -34,7 +34,12 @@ struct VarState {
   bool changed = false;   // differs from its value before this step (or new)
   VarShape shape = VarShape::scalar;
   std::array<float, 3> rgb{};  // a colour's components
+  std::vector<double> parts{};  // every component of a vector, colour or list (value: the first)
 };
+
+// Two runs' values of one variable apart: the scalars' |a - b|, or the largest over a vector's,
+// colour's or list's components (NaN where any is); none when the lists' lengths differ.
+std::optional<double> value_difference(const VarState& a, const VarState& b);
 
 inline constexpr std::uint32_t kNoStep = 0xffffffffu;
 

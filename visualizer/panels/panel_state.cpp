@@ -131,9 +131,10 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r) {
       if (y) compare_cell(*y);
       ImGui::TableNextColumn();
       if (x && y) {
-        const double diff = std::fabs(x->value - y->value);
-        if (diff == 0) ImGui::TextDisabled("0");
-        else ImGui::TextColored(theme::kError, "%.3g", diff);
+        const std::optional<double> diff = value_difference(*x, *y);
+        if (!diff) ImGui::TextColored(theme::kError, "lengths differ");
+        else if (*diff == 0) ImGui::TextDisabled("0");
+        else ImGui::TextColored(theme::kError, "%.3g", *diff);
       }
     }
     ImGui::EndTable();
