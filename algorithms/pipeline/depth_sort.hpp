@@ -183,9 +183,10 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
     if constexpr (Probe::on) probe.step(L::pick, StepKind::init).idx("P", P.id).idx("vertices", std::int64_t(P.v.size())).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(flat(P))).label("P").replace();
     std::size_t blocker = 0;  // the Q that P may hide, if any
     bool q_first = false;     // whether that Q may simply be painted first
+    const auto px = range(P, 0), py = range(P, 1), pz = range(P, 2);
     for (std::size_t k = 1; k < list.size() && !img.gave_up; ++k) {
       const SortPolygon<Num>& Q = list[k];
-      const auto pz = range(P, 2), qz = range(Q, 2);
+      const auto qz = range(Q, 2);
       if (!(qz[1] > pz[0])) continue;
       if (img.tests == max_tests) {
         img.gave_up = true;
@@ -193,7 +194,7 @@ PaintedImage depth_sort(std::int64_t width, std::int64_t height, const std::vect
       }
       ++img.tests;
       if constexpr (Probe::on) probe.step(L::each, StepKind::advance).idx("Q", Q.id).num("P.near", pz[0]).num("Q.far", qz[1]).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(flat(Q))).label("Q").replace();
-      const auto px = range(P, 0), qx = range(Q, 0), py = range(P, 1), qy = range(Q, 1);
+      const auto qx = range(Q, 0), qy = range(Q, 1);
       const bool apart = px[1] <= qx[0] || qx[1] <= px[0] || py[1] <= qy[0] || qy[1] <= py[0];
       if constexpr (Probe::on) probe.step(L::extent, StepKind::decide).idx("apart", apart);
       if (apart) continue;

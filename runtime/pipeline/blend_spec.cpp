@@ -92,15 +92,14 @@ std::vector<BenchSet<BlendInput>> blend_sets() {
   std::vector<BenchSet<BlendInput>> sets{{"depth-write", {}}, {"no-depth-write", {}}};
   std::mt19937_64 rng(20261201);
   std::uniform_real_distribution<double> xy(-4, 68), u(0, 1);
-  auto q = [](double v, int bits) { return Rational(static_cast<long>(std::ldexp(v, bits))) / Rational(static_cast<long>(1L << bits)); };
   for (int k = 0; k < 16; ++k)
     for (int set = 0; set < 2; ++set) {
       BlendInput in{64, 64, {}, {0, 0, 0}, set == 0};
       for (int i = 0; i < 16; ++i) {
         pipeline_oracle::BlendTriangle t;
-        for (auto& v : t.v) v = {q(xy(rng), 8), q(xy(rng), 8), q(u(rng), 16)};
-        t.rgb = {q(u(rng), 8), q(u(rng), 8), q(u(rng), 8)};
-        t.alpha = q(0.2 + 0.6 * u(rng), 8);
+        for (auto& v : t.v) v = {on_grid(xy(rng), 8), on_grid(xy(rng), 8), on_grid(u(rng), 16)};
+        t.rgb = {on_grid(u(rng), 8), on_grid(u(rng), 8), on_grid(u(rng), 8)};
+        t.alpha = on_grid(0.2 + 0.6 * u(rng), 8);
         in.tris.push_back(t);
       }
       sets[set].inputs.push_back(in);

@@ -89,7 +89,7 @@ const Json& primitive_list(const Json& j, const char* key, const char* shape) {
 
 Vec3<Rational> volume_point(const CameraInput& c, std::mt19937_64& rng, double d0, double d1) {
   std::uniform_real_distribution<double> depth(d0, d1), across(-1, 1);
-  auto q = [](double v) { return Rational(static_cast<long>(std::ldexp(v, 20))) / (1L << 20); };
+  auto q = [](double v) { return on_grid(v, 20); };
   const pipe::Frame<Rational> fr = pipe::look_frame(c.cam.look);
   const double d = depth(rng);
   return c.cam.look.eye + q(d) * fr.f + q(across(rng) * d) * fr.s + q(across(rng) * d) * fr.u;

@@ -5,6 +5,7 @@
 //   "viewport": [x, y, width, height], and optionally "depth_range": [dn, df] (default [0, 1]).
 #pragma once
 #include <array>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -39,6 +40,17 @@ Rational parse_coord(const Json& v, const std::string& what);
 Vec3<Rational> parse_coord3(const Json& v, const std::string& what);
 
 inline std::array<Rational, 3> arr_of(const Vec3<Rational>& v) { return {v.x, v.y, v.z}; }
+
+// v on the grid of 2^-bits (truncated toward zero), exactly: the bench sets' seeded coordinates.
+// Precondition: |v| 2^bits fits a long.
+inline Rational on_grid(double v, int bits) { return Rational(static_cast<long>(std::ldexp(v, bits))) / Rational(static_cast<long>(1L << bits)); }
+
+// The raster algorithms' error: the pixels whose ids differ.
+inline double differing_ids(const std::vector<std::int64_t>& got, const std::vector<std::int64_t>& exact) {
+  double wrong = 0;
+  for (std::size_t i = 0; i < got.size() && i < exact.size(); ++i) wrong += got[i] != exact[i];
+  return wrong;
+}
 
 // The samples of a window-space triangle's bounding box that lie in a width x height window: a
 // bound on the fragments it makes, for the raster algorithms' step estimates.

@@ -38,15 +38,13 @@ template <class Num> struct DSPrepared {
   std::vector<std::int64_t> ids;
 };
 
-// A window 128 x 128 on a 1/256 grid, depth on a 2^-24 grid.
-Rational on_grid(double v, int bits) { return Rational(static_cast<long>(std::ldexp(v, bits))) / Rational(static_cast<long>(1L << bits)); }
-
 // Seeded scenes: random triangles (many penetrate); pairs crossing in depth like an X seen from
 // above; and three sticks in a pinwheel, each over the next: a cycle no order paints.
 std::vector<BenchSet<DSInput>> ds_sets() {
   std::vector<BenchSet<DSInput>> sets{{"random", {}}, {"penetrating", {}}, {"cyclic", {}}};
   std::mt19937_64 rng(20261127);
   std::uniform_real_distribution<double> xy(-8, 136), zz(0.05, 0.95), turn(0, 2 * std::numbers::pi), u(-1, 1);
+  // A 128 x 128 window: x and y on a 1/256 grid, depth on a 2^-24 grid.
   auto vertex = [](double x, double y, double z) { return std::array<Rational, 3>{on_grid(x, 8), on_grid(y, 8), on_grid(z, 24)}; };
   auto add = [](DSInput& in, const std::array<std::array<Rational, 3>, 3>& v, std::int64_t id) { in.tris.push_back({v, id, 0, 0}); };
   for (int k = 0; k < 16; ++k) {
@@ -118,11 +116,7 @@ struct DepthSortSpec {
   }
   static std::size_t ops(const Output& o) { return static_cast<std::size_t>(std::max<std::int64_t>(1, o.painted)); }
   static constexpr std::string_view error_unit = "pixels";
-  static double error(const Output& got, const Output& exact) {
-    double wrong = 0;
-    for (std::size_t i = 0; i < got.ids.size() && i < exact.ids.size(); ++i) wrong += got.ids[i] != exact.ids[i];
-    return wrong;
-  }
+  static double error(const Output& got, const Output& exact) { return differing_ids(got.ids, exact.ids); }
   // With T the bound on tests: at most n + 2T rounds (a paint, or a move or cut after a test),
   // each a pick and at most a move step and a cut step; five steps per test; the painted samples,
   // which the pieces of a triangle split among them (twice the triangles' boxes: float's pieces may

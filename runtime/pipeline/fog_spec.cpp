@@ -77,7 +77,7 @@ std::vector<BenchSet<FogInput>> fog_sets() {
   std::vector<BenchSet<FogInput>> sets{{"linear", {}}, {"exp", {}}, {"exp2", {}}};
   std::mt19937_64 rng(20261202);
   std::uniform_real_distribution<double> dist(0, 120), u(0, 1);
-  auto q = [](double v) { return Rational(static_cast<long>(std::ldexp(v, 16))) / Rational(1L << 16); };
+  auto q = [](double v) { return on_grid(v, 16); };
   for (int k = 0; k < 32; ++k)
     for (int m = 0; m < 3; ++m) {
       FogInput in{{static_cast<pipe::FogMode>(m), Rational(10), Rational(100), Rational(1, 32), Vec3<Rational>{q(0.5), q(0.5), q(0.5)}}, {}};

@@ -93,7 +93,7 @@ std::vector<BenchSet<FrustumInput>> frustum_sets() {
   CameraGen cams(20261129);
   std::mt19937_64 rng(20261129);
   std::uniform_real_distribution<double> size(0.1, 4);
-  auto q = [](double v) { return Rational(static_cast<long>(std::ldexp(v, 16))) / (1L << 16); };
+  auto q = [](double v) { return on_grid(v, 16); };
   for (int k = 0; k < 64; ++k)
     for (int set = 0; set < 2; ++set) {
       FrustumInput in{cams.next(Rational(10), Rational(1), Rational(100), 1024, 1024), {}};

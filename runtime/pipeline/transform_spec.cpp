@@ -76,7 +76,7 @@ std::vector<TransformInput> frustum_points(std::uint64_t seed, int cases, const 
     const pipe::Frame<Rational> fr = pipe::look_frame(c.look);
     for (int i = 0; i < 16; ++i) {
       const double dd = 1 + depth(rng) * 99;  // the far plane at 100; a point lo..hi of the way there
-      auto q = [](double v) { return Rational(static_cast<long>(std::ldexp(v, 20))) / (1L << 20); };
+      auto q = [](double v) { return on_grid(v, 20); };
       const Rational d = q(dd), x = q(across(rng) * dd), y = q(across(rng) * dd);
       in.points.push_back(c.look.eye + d * fr.f + x * fr.s + y * fr.u);
     }

@@ -75,12 +75,11 @@ std::vector<BenchSet<ZInput>> z_sets() {
   std::vector<BenchSet<ZInput>> sets{{"random", {}}, {"coplanar", {}}, {"near-coplanar-16bit", {}}};
   std::mt19937_64 rng(20261130);
   std::uniform_real_distribution<double> xy(-8, 136), zz(0.05, 0.95), tilt(-0.002, 0.002);
-  auto q = [](double v, int bits) { return Rational(static_cast<long>(std::ldexp(v, bits))) / Rational(static_cast<long>(1L << bits)); };
   for (int k = 0; k < 16; ++k) {
     ZInput r{128, 128, {}, 24, pipe::DepthFunc::less, 1};
     for (int i = 0; i < 32; ++i) {
       pipeline_oracle::DepthTriangle t;
-      for (auto& v : t.v) v = {q(xy(rng), 8), q(xy(rng), 8), q(zz(rng), 24)};
+      for (auto& v : t.v) v = {on_grid(xy(rng), 8), on_grid(xy(rng), 8), on_grid(zz(rng), 24)};
       t.id = i;
       r.tris.push_back(t);
     }
@@ -88,7 +87,7 @@ std::vector<BenchSet<ZInput>> z_sets() {
     for (int set = 1; set < 3; ++set) {
       // A plane z = z0 + gx x + gy y over the window, drawn as two quads split along different diagonals.
       ZInput p{128, 128, {}, set == 1 ? 0 : 16, pipe::DepthFunc::less, 1};
-      const Rational z0 = q(zz(rng), 20), gx = q(tilt(rng), 30), gy = q(tilt(rng), 30);
+      const Rational z0 = on_grid(zz(rng), 20), gx = on_grid(tilt(rng), 30), gy = on_grid(tilt(rng), 30);
       const Rational apart = set == 1 ? Rational(0) : Rational(1, 1 << 20);
       auto at = [&](int x, int y, const Rational& dz) { return std::array<Rational, 3>{Rational(x), Rational(y), z0 + gx * x + gy * y + dz}; };
       p.tris.push_back({{at(-4, -4, 0), at(131, -4, 0), at(131, 131, 0)}, 0, 0, 0});
@@ -137,11 +136,7 @@ struct ZBufferSpec {
   }
   static std::size_t ops(const Output& o) { return static_cast<std::size_t>(o.fragments); }
   static constexpr std::string_view error_unit = "pixels";
-  static double error(const Output& got, const Output& exact) {
-    double wrong = 0;
-    for (std::size_t i = 0; i < got.ids.size() && i < exact.ids.size(); ++i) wrong += got.ids[i] != exact.ids[i];
-    return wrong;
-  }
+  static double error(const Output& got, const Output& exact) { return differing_ids(got.ids, exact.ids); }
   // Per triangle a plane, an offset and a cover step; per fragment at most three.
   static std::size_t estimate_steps(const Input& in) { return 2 + 3 * in.tris.size() + static_cast<std::size_t>(3 * window_samples(in)); }
   static Output oracle(const Input& in) {
