@@ -3,14 +3,18 @@
 // and leaves no image.
 #include "scene_command.hpp"
 #include <unistd.h>
+#include <chrono>
+#include <filesystem>
 #include <cstdio>
+#include <sstream>
 #include <iostream>
 #include <regex>
 #include "budget.hpp"
 #include "png.hpp"
 #include "output.hpp"
 #include "tracer/plan.hpp"
-#include "tracer/render.hpp"
+#include "pipeline/raster_shade.hpp"
+#include "pipeline/raster_truth.hpp"
 #include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"
 #include "tracer/scene.hpp"
@@ -24,7 +28,8 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.plan = c.group->add_subcommand("plan", "Print the effect plan: each effect on or off, and why (docs/tracer/planner.md)");
   c.render = c.group->add_subcommand("render", "Render a scene to a PNG with the Whitted tracer (docs/tracer/renderer.md)");
   c.export_pov = c.group->add_subcommand("export-pov", "Write the scene as POV-Ray 3.7 SDL: the image, object ids or a shadow mask (docs/tracer/povray.md)");
-  for (CLI::App* sub : {c.check, c.plan, c.render, c.export_pov}) sub->add_option("scene", c.file, "Scene file (JSON)")->required();
+  c.raster = c.group->add_subcommand("raster", "Draw a scene by rasterization: clipping, the z-buffer, local lighting (docs/pipeline/semantics.md#scene-raster)");
+  for (CLI::App* sub : {c.check, c.plan, c.render, c.export_pov, c.raster}) sub->add_option("scene", c.file, "Scene file (JSON)")->required();
   c.check->add_flag("--json", c.json, "Print the summary as one JSON object");
   c.plan->add_flag("--json", c.json, "Print the plan as one JSON object");
   c.render->add_option("--out", c.out, "The PNG to write")->required();
@@ -43,6 +48,15 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
       ->check(CLI::IsMember({"image", "ids", "shadow"}));
   c.export_pov->add_option("--light", c.light, "shadow mode: the light's index (0-based)");
   c.export_pov->add_option("--size", c.size, "WxH the camera is set up for, instead of the scene's resolution");
+  c.raster->add_option("--out", c.out, "The PNG to write")->required();
+  c.raster->add_option("--size", c.size, "WxH instead of the scene's resolution (each 1..8192)");
+  c.raster->add_option("--numeric", c.numeric, "The number type it draws in: float, double (default), filtered or exact")
+      ->check(CLI::IsMember({"float", "double", "filtered", "exact"}));
+  c.raster->add_option("--shading", c.shading, "phong (per fragment, default) or gouraud (per vertex)")->check(CLI::IsMember({"phong", "gouraud"}));
+  c.raster->add_option("--stacks", c.stacks, "A sphere's bands of latitude (2 stacks slices of longitude), 2..256; default 12");
+  c.raster->add_option("--depth", c.depth_out, "Also write the depth buffer as a grey PNG (near black, far white)");
+  c.raster->add_flag("--identity", c.identity, "Compare every pixel with the exact ray cast (scene-hit), drawn in float, double, filtered and exact");
+  c.raster->add_flag("--quiet", c.quiet, "No summary");
 }
 
 namespace {
@@ -104,6 +118,68 @@ int render(const SceneCommands& c) {
   return 0;
 }
 
+// `scene raster`: the image in the chosen mode; with --identity, each mode's pixels against the
+// exact ray cast, timed. Everything is drawn and judged before a file is written.
+int raster(const SceneCommands& c) {
+  pipespec::RasterOptions o;
+  parse_size(c.size, o.width, o.height);
+  o.stacks = c.stacks;
+  auto scene = std::make_shared<const tracer::Scene>(tracer::read_scene_file(c.file));
+  const std::int64_t w = o.width ? o.width : scene->camera.width, h = o.height ? o.height : scene->camera.height;
+  if (w * h > tracer::kMaxPixels) throw InputError("--size: " + std::to_string(w) + "x" + std::to_string(h) + " is more than 2^24 pixels");
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  const std::shared_ptr<const pipespec::RasterScene> rs = pipespec::raster_scene(std::move(scene), o);
+  const double prepared = std::chrono::duration<double>(clock::now() - t0).count();
+  const Numeric mode = parse_numeric(c.numeric).value();  // checked by the option
+  auto timed = [&](Numeric n, bool* fb) {
+    const auto t = clock::now();
+    pipespec::RasterPixels px = pipespec::draw(*rs, n, fb);
+    return std::pair{std::move(px), std::chrono::duration<double>(clock::now() - t).count()};
+  };
+  bool fell_back = false;
+  const auto [px, seconds] = timed(mode, &fell_back);
+  std::ostringstream report;
+  report.precision(3);
+  report << "scene raster: " << rs->width << "x" << rs->height << " in " << c.numeric << (fell_back ? " (intervals fell back to exact)" : "") << ", "
+         << rs->tris.size() << " triangles (" << px.culled << " outside the view volume, " << px.cut << " cut by its planes), " << px.drawn
+         << " window triangles, " << px.fragments << " fragments; " << seconds << " s (scene prepared in " << prepared << " s)\n"
+         << "near plane at eye depth " << rs->camera.near.get_d() << " (half the nearest surface in view), far plane at infinity; "
+         << pipespec::shading_name(c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong)
+         << " shading; not drawn: shadows, mirror and glass rays (a rasterizer lights locally)\n";
+  if (c.identity) {
+    const auto t = clock::now();
+    const pipespec::RasterTruth truth = pipespec::raster_truth(*rs, 0);
+    report << "identity against the exact ray cast through each pixel centre (scene-hit, " << truth.px.size() << " pixels, "
+           << truth.exact_rays << " decided in rationals; " << std::chrono::duration<double>(clock::now() - t).count() << " s):\n"
+           << "  mode      seconds  differ  ties  wrong  inside  objects differ  objects wrong\n";
+    for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
+      const auto [p, s] = n == mode ? std::pair{px, seconds} : timed(n, nullptr);
+      const pipespec::Identity id = pipespec::identity(truth, p);
+      char line[160];
+      std::snprintf(line, sizeof line, "  %-8s %8.3f %7lld %5lld %6lld %7lld %15lld %14lld\n", std::string(numeric_name(n)).c_str(), s, (long long)id.differ,
+                    (long long)id.ties, (long long)id.wrong, (long long)id.wrong_inside, (long long)id.objects_differ, (long long)id.objects_wrong);
+      report << line;
+    }
+    report << "  differ: another primitive than scene-hit's closest hit; ties: of those, exact edge ties GL's rule gives to another triangle; "
+              "wrong: another primitive than GL's rule gives; inside: of those, where the closest hit lies inside a triangle (no tie)\n";
+  }
+  const std::vector<std::uint8_t> rgb =
+      tracer::to_rgb8(pipespec::shade_pixels(*rs, px, c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong));
+  write_png(c.out, rgb.data(), static_cast<int>(px.width), static_cast<int>(px.height), 3);
+  if (!c.depth_out.empty()) {
+    const std::vector<std::uint8_t> grey = pipespec::depth_grey(px);
+    try {
+      write_png(c.depth_out, grey.data(), static_cast<int>(px.width), static_cast<int>(px.height), 1);
+    } catch (const InputError&) {
+      std::filesystem::remove(c.out);  // both files or neither
+      throw;
+    }
+  }
+  if (!c.quiet) std::cout << report.str();
+  return 0;
+}
+
 }  // namespace
 
 int run_scene_commands(const SceneCommands& c) {
@@ -121,6 +197,7 @@ int run_scene_commands(const SceneCommands& c) {
   }
   if (*c.render) return render(c);
   if (*c.export_pov) return export_pov(c);
+  if (*c.raster) return raster(c);
   return 2;
 }
 

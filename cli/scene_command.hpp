@@ -1,6 +1,7 @@
 // `stepwise scene ...`: the commands on one ray-tracer scene file (docs/tracer/scene-format.md).
 // `check` validates it and prints a summary; `plan` prints the effect plan; `render` renders it;
-// `export-pov` writes it as POV-Ray SDL (docs/tracer/povray.md).
+// `export-pov` writes it as POV-Ray SDL (docs/tracer/povray.md); `raster` draws it with the
+// pipeline family's rasterizer (docs/pipeline/semantics.md#scene-raster).
 #pragma once
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -13,7 +14,7 @@ namespace sw::cli {
 // main keeps this alive while parsing: the subcommands write their options into it.
 struct SceneCommands {
   CLI::App* group = nullptr;
-  CLI::App *check = nullptr, *plan = nullptr, *render = nullptr, *export_pov = nullptr;
+  CLI::App *check = nullptr, *plan = nullptr, *render = nullptr, *export_pov = nullptr, *raster = nullptr;
   std::string file;
   bool json = false;
   std::string out, offset = "robust";
@@ -24,6 +25,9 @@ struct SceneCommands {
   std::uint64_t max_rays = tracer::kDefaultMaxRays;  // render: the work budget
   std::string mode = "image";  // export-pov
   std::int64_t light = 0;
+  std::string numeric = "double", shading = "phong", depth_out;  // raster
+  int stacks = 12;
+  bool identity = false;
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

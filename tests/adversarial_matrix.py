@@ -1175,7 +1175,8 @@ def scene_cases(M, exe, source, shared, notes):
                    ("scene plan", lambda f, o: ["scene", "plan", f]),
                    ("scene render", lambda f, o: ["scene", "render", f, "--size", "8x6", "--quiet", "--threads", "1",
                                                   "--out", os.path.join(o, "x.png")]),
-                   ("scene export-pov", lambda f, o: ["scene", "export-pov", f, "--out", os.path.join(o, "x.pov")])]
+                   ("scene export-pov", lambda f, o: ["scene", "export-pov", f, "--out", os.path.join(o, "x.pov")]),
+                   ("scene raster", lambda f, o: ["scene", "raster", f, "--size", "8x6", "--quiet", "--out", os.path.join(o, "x.png")])]
     full_base = next((b for b in bases if b[0] == "cornell-box.json"), bases[0])
     turn = 0
     for f, doc in bases:
@@ -1217,6 +1218,21 @@ def scene_cases(M, exe, source, shared, notes):
                         ("--size ''", ["--size", ""]), ("an unknown option", ["--zz-bogus"])]:
         M.add("scene export-pov", None, what, lambda o, i, extra=extra: (pov + extra + ["--out", os.path.join(o, "x.pov")], {}))
     M.add("scene export-pov", None, "--out is a directory", lambda o, i: (pov + ["--out", o], {}))
+    raster = ["scene", "raster", good, "--quiet"]
+    cases = [("--stacks %s" % v, ["--stacks", v]) for v in ["0", "1", "257", "-1", "abc", "99999999999"]]
+    cases += [("--numeric int", ["--numeric", "int"]), ("--numeric reference", ["--numeric", "reference"]),
+              ("an unknown --shading", ["--shading", "zz-bogus"]), ("an unknown option", ["--zz-bogus"])]
+    cases += [("--size %r" % v, ["--size", v]) for v in ["0x0", "-1x-1", "8193x1", "abc", "", "8x", "4096x8192"]]
+    for what, extra in cases:
+        M.add("scene raster", None, what, lambda o, i, extra=extra: (raster + extra + ["--out", os.path.join(o, "x.png")], {}))
+    M.add("scene raster", None, "--out is a directory", lambda o, i: (raster + ["--size", "8x6", "--out", o], {}))
+    M.add("scene raster", None, "--out in a missing directory",
+          lambda o, i: (raster + ["--size", "8x6", "--out", os.path.join(o, "missing", "x.png")], {}))
+    M.add("scene raster", None, "--depth in a missing directory",
+          lambda o, i: (raster + ["--size", "8x6", "--out", os.path.join(o, "x.png"), "--depth", os.path.join(o, "missing", "d.png")], {}))
+    M.add("scene raster", None, "no --out", lambda o, i: (raster + ["--size", "8x6"], {}))
+    fisheye = os.path.join(source, "scenes", "tiny-scale.json")
+    M.add("scene raster", None, "a fisheye camera", lambda o, i: (["scene", "raster", fisheye, "--size", "8x6", "--out", os.path.join(o, "x.png")], {}))
     for sub in ("check", "plan"):
         M.add("scene " + sub, None, "an unknown option", lambda o, i, sub=sub: (["scene", sub, good, "--zz-bogus"], {}))
 

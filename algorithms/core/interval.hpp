@@ -133,7 +133,7 @@ inline bool certified(const Interval& x, double rel) { return 0.5 * (x.hi() - x.
 inline std::string to_text(const Interval& x) { return to_text(x.mid()); }
 template <> inline Interval from_rational<Interval>(const Rational& q) {
   double d = from_rational<double>(q);
-  if (Rational(num::to_rational(d)) == q) return Interval(d);
+  if (is_double(q) || Rational(num::to_rational(d)) == q) return Interval(d);
   return Interval::hull(std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY));
 }
 }  // namespace num

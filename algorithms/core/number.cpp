@@ -4,7 +4,16 @@
 
 namespace sw::num {
 
+// A dyadic q whose numerator fits the significand (most inputs: doubles, written exactly) is
+// representable, and mpq_get_d returns it exactly: no MPFR rounding is needed.
+static bool representable(const Rational& q, int significand, int max_exponent) {
+  const mpz_srcptr n = q.get_num_mpz_t(), d = q.get_den_mpz_t();
+  return mpz_sizeinbase(n, 2) <= std::size_t(significand) && mpz_popcount(d) == 1 && mpz_sizeinbase(d, 2) <= std::size_t(max_exponent);
+}
+bool is_double(const Rational& q) { return representable(q, 53, 1000); }
+
 template <> float from_rational<float>(const Rational& q) {
+  if (representable(q, 24, 120)) return static_cast<float>(mpq_get_d(q.get_mpq_t()));
   mpfr_t m;
   mpfr_init2(m, 24);
   mpfr_set_q(m, q.get_mpq_t(), MPFR_RNDN);
@@ -13,6 +22,7 @@ template <> float from_rational<float>(const Rational& q) {
   return f;
 }
 template <> double from_rational<double>(const Rational& q) {
+  if (is_double(q)) return mpq_get_d(q.get_mpq_t());
   mpfr_t m;
   mpfr_init2(m, 53);
   mpfr_set_q(m, q.get_mpq_t(), MPFR_RNDN);

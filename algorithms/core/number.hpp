@@ -161,6 +161,9 @@ template <> double from_rational<double>(const Rational& q);
 template <> std::int64_t from_rational<std::int64_t>(const Rational& q);
 template <> Rational from_rational<Rational>(const Rational& q);
 
+// Whether q is exactly a double (then from_rational<double> returns it without rounding).
+bool is_double(const Rational& q);
+
 // Lossless text: shortest round-trip decimal for float/double (read back as a double, it is the
 // same value), "p/q" or "n" for rationals, the integer for int64.
 std::string to_text(float x);

@@ -99,6 +99,23 @@ template <class Num> Mat4<Num> projection_matrix(const Projection<Num>& p) {
            {O, O, O, I}}};
 }
 
+// glFrustum's matrix as f goes to infinity: the third row tends to (0, 0, -1, -2n), so a point at
+// eye depth e > 0 gets z_ndc = 1 - 2n/e, and a point at infinity (w = 0) z_ndc = 1. Nothing in
+// front of the near plane is cut away, and a plane is drawn to its horizon.
+template <class Num> Mat4<Num> infinite_projection_matrix(const Num& l, const Num& r, const Num& b, const Num& t, const Num& n) {
+  Projection<Num> p{true, l, r, b, t, n, Num(n + n)};  // f only shapes the third row, replaced below
+  Mat4<Num> m = projection_matrix(p);
+  m[2] = {Num(0), Num(0), Num(-1), Num(Num(-2) * n)};
+  return m;
+}
+
+// m x for a homogeneous point x (w = 0: a point at infinity, a direction).
+template <class Num> Vec4<Num> apply(const Mat4<Num>& m, const Vec4<Num>& x) {
+  std::array<Num, 4> out;
+  for (int k = 0; k < 4; ++k) out[k] = Num(m[k][0] * x.x + m[k][1] * x.y + m[k][2] * x.z + m[k][3] * x.w);
+  return {out[0], out[1], out[2], out[3]};
+}
+
 // Normalized device coordinates in window coordinates (glViewport, glDepthRange).
 template <class Num> Vec3<Num> to_window(const Viewport<Num>& v, const Vec3<Num>& ndc) {
   return {Num(v.x + (ndc.x + Num(1)) * v.w / Num(2)), Num(v.y + (ndc.y + Num(1)) * v.h / Num(2)),

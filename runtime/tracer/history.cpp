@@ -8,9 +8,7 @@
 
 namespace sw::tracer {
 
-namespace {
-
-std::shared_ptr<const Scene> load_scene(const Json& v, std::string* name) {
+std::shared_ptr<const Scene> scene_input(const Json& v, std::string* name) {
   if (v.is_string()) {
     std::filesystem::path p = v.get<std::string>();
     *name = p.string();
@@ -29,6 +27,8 @@ std::shared_ptr<const Scene> load_scene(const Json& v, std::string* name) {
   }
 }
 
+namespace {
+
 std::array<std::int64_t, 2> pair(const Json& j, const char* key, std::int64_t lo, std::int64_t hi0, std::int64_t hi1) {
   const Json& v = j[key];
   const std::string what = std::string("input.") + key;
@@ -42,7 +42,7 @@ HistoryInput parse_history_input(const Json& j) {
   if (!j.is_object()) throw InputError("input: expected an object");
   only_keys_optional(j, {"scene", "pixel"}, {"size", "offset", "all_effects"}, "input");
   HistoryInput in;
-  in.scene = load_scene(j["scene"], &in.scene_name);
+  in.scene = scene_input(j["scene"], &in.scene_name);
   in.width = in.scene->camera.width, in.height = in.scene->camera.height;
   if (j.contains("size")) {
     const auto s = pair(j, "size", 1, kMaxResolution, kMaxResolution);

@@ -23,6 +23,10 @@ struct HistoryInput {
   bool all_effects = false;
 };
 
+// An input's "scene": a scene file relative to the data root (data_root.hpp), or a scene object;
+// name is set to the file as given, or "inline". Errors name the input's JSON path.
+std::shared_ptr<const Scene> scene_input(const Json& v, std::string* name);
+
 // {"scene": "scenes/x.json" (relative to the data root: data_root.hpp) or a scene object, "pixel": [i, j],
 // "size": [w, h], "offset": "robust"|"none"|"epsilon", "all_effects": bool}. Throws InputError
 // naming the JSON path ("input.pixel[0]: ...", "input.scene.objects[1].radius: ...").

@@ -213,12 +213,13 @@ RenderResult render(const Scene& s, const RenderOptions& opt) {
   return out;
 }
 
-std::vector<std::uint8_t> to_rgb8(const RenderResult& r) {
-  std::vector<std::uint8_t> out(r.rgb.size() * 3);
-  for (std::size_t p = 0; p < r.rgb.size(); ++p)
-    for (int k = 0; k < 3; ++k) out[3 * p + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(std::lround(255 * std::clamp(r.rgb[p][k], 0.0, 1.0)));
+std::vector<std::uint8_t> to_rgb8(const std::vector<Vec3<double>>& rgb) {
+  std::vector<std::uint8_t> out(rgb.size() * 3);
+  for (std::size_t p = 0; p < rgb.size(); ++p)
+    for (int k = 0; k < 3; ++k) out[3 * p + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(std::lround(255 * std::clamp(rgb[p][k], 0.0, 1.0)));
   return out;
 }
+std::vector<std::uint8_t> to_rgb8(const RenderResult& r) { return to_rgb8(r.rgb); }
 
 std::string render_summary(const RenderResult& r) {
   std::ostringstream o;

@@ -51,6 +51,7 @@ std::uint64_t render_cost(const Scene& s, const Plan& plan, const RenderOptions&
 RenderResult render(const Scene& s, const RenderOptions& opt);
 
 // Colours clamped to [0, 1] and rounded to 8 bits, RGB rows.
+std::vector<std::uint8_t> to_rgb8(const std::vector<Vec3<double>>& rgb);
 std::vector<std::uint8_t> to_rgb8(const RenderResult& r);
 // "rays: 123 primary, ..." and the time: what `scene render` prints at the end.
 std::string render_summary(const RenderResult& r);

@@ -46,7 +46,7 @@ std::vector<Json> scenes() {
   std::vector<Json> out{Json::parse(find_algorithm("depth-sort").example)};
   for (Json j : corpus("pipeline")) {
     // The z-buffer's and depth-sort's cases, without the z-buffer's depth settings and offsets.
-    if (!j.contains("size") || j.contains("background") || j["triangles"].size() > 64) continue;
+    if (!j.contains("triangles") || !j.contains("size") || j.contains("background") || j["triangles"].size() > 64) continue;
     bool plain = true;
     for (const Json& t : j["triangles"]) plain = plain && !t.contains("offset") && !t.contains("rgb");
     if (!plain) continue;

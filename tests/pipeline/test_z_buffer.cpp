@@ -50,7 +50,7 @@ Rational quantized(const Rational& z, int bits) {
 std::vector<Json> z_inputs() {
   std::vector<Json> out{Json::parse(find_algorithm("z-buffer").example)};
   for (const Json& j : corpus("pipeline"))
-    if (j.contains("size")) out.push_back(j);
+    if (j.contains("size") && j.contains("triangles")) out.push_back(j);
   return out;
 }
 

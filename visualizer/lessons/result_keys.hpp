@@ -28,9 +28,9 @@ constexpr bool shows(const Algorithm& a, View v) { return std::find(a.views.begi
 // The lobe view: the input's own eye, marked at the term's value.
 inline constexpr ResultRead lobe_value{"value", "the lobe view's eye", [](const Algorithm& a) { return shows(a, View::lobe); },
                                        true};
-// The scene view: the pixel's colour above the ray tree.
+// The scene view: the picked pixel's colour above the ray tree (a picture without a pick has none).
 inline constexpr ResultRead scene_colour{"colour", "the scene view's pixel colour",
-                                         [](const Algorithm& a) { return shows(a, View::scene); }, true};
+                                         [](const Algorithm& a) { return shows(a, View::scene) && !a.picture.pick.empty(); }, true};
 // The compare strip of two algorithms of a compare group: each one's value.
 inline constexpr ResultRead strip_value{"value", "the compare strip of two algorithms",
                                         [](const Algorithm& a) { return !a.compare_group.empty(); }, true};

@@ -126,7 +126,7 @@ CanvasEvents SceneCanvas::draw(const CanvasInput& in, ImVec2 size) {
   std::snprintf(lines[0], sizeof lines[0], "%lldx%lld preview in %.2f s", (long long)picture_.width, (long long)picture_.height,
                 picture_.seconds);
   std::snprintf(lines[1], sizeof lines[1], "one sample through each pixel's centre");
-  std::snprintf(lines[2], sizeof lines[2], "click a pixel: its history");
+  std::snprintf(lines[2], sizeof lines[2], "%s", pick.empty() ? "" : "click a pixel: its history");
   if (!in.hide_sweep) status_plate(dl, ImVec2(origin.x + 4, origin.y + 4), lines, !error_.empty());
   ImGui::SetCursorScreenPos(ImVec2(end.x - side, origin.y));
   ImGui::BeginChild("##scene-side", ImVec2(side, size.y), false);
