@@ -152,17 +152,19 @@ int raster(const SceneCommands& c) {
     const pipespec::RasterTruth truth = pipespec::raster_truth(*rs, 0);
     report << "identity against the exact ray cast through each pixel centre (scene-hit, " << truth.px.size() << " pixels, "
            << truth.exact_rays << " decided in rationals; " << std::chrono::duration<double>(clock::now() - t).count() << " s):\n"
-           << "  mode      seconds  differ  ties  wrong  inside  objects differ  objects wrong\n";
+           << "  mode      seconds  differ  ties  wrong  inside  holes  objects differ  objects wrong\n";
     for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
       const auto [p, s] = n == mode ? std::pair{px, seconds} : timed(n, nullptr);
       const pipespec::Identity id = pipespec::identity(truth, p);
       char line[160];
-      std::snprintf(line, sizeof line, "  %-8s %8.3f %7lld %5lld %6lld %7lld %15lld %14lld\n", std::string(numeric_name(n)).c_str(), s, (long long)id.differ,
-                    (long long)id.ties, (long long)id.wrong, (long long)id.wrong_inside, (long long)id.objects_differ, (long long)id.objects_wrong);
+      std::snprintf(line, sizeof line, "  %-8s %8.3f %7lld %5lld %6lld %7lld %6lld %15lld %14lld\n", std::string(numeric_name(n)).c_str(), s,
+                    (long long)id.differ, (long long)id.ties, (long long)id.wrong, (long long)id.wrong_inside, (long long)id.holes, (long long)id.objects_differ,
+                    (long long)id.objects_wrong);
       report << line;
     }
     report << "  differ: another primitive than scene-hit's closest hit; ties: of those, exact edge ties GL's rule gives to another triangle; "
-              "wrong: another primitive than GL's rule gives; inside: of those, where the closest hit lies inside a triangle (no tie)\n";
+              "wrong: another primitive than GL's rule gives; inside: of those, where the closest hit lies inside a triangle (no tie); holes: of "
+              "those, where the raster shows nothing (a crack)\n";
   }
   const std::vector<std::uint8_t> rgb =
       tracer::to_rgb8(pipespec::shade_pixels(*rs, px, c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong));

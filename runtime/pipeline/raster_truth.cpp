@@ -144,6 +144,7 @@ Identity identity(const RasterTruth& truth, const RasterPixels& raster) {
     ++id.pixels;
     const bool differ = o != p.ray_object || q != p.ray_prim, wrong = o != p.object || q != p.prim;
     id.differ += differ, id.wrong += wrong, id.ties += differ && !wrong, id.wrong_inside += wrong && !p.boundary;
+    id.holes += o < 0 && p.object >= 0;
     id.objects_differ += o != p.ray_object, id.objects_wrong += o != p.object;
   }
   return id;

@@ -39,6 +39,7 @@ struct Identity {
   std::int64_t ties = 0;         // ... of which GL's tie rule explains (the raster equals GL's answer)
   std::int64_t wrong = 0;        // the raster names another primitive than GL's answer
   std::int64_t wrong_inside = 0;  // ... of which where the ray's closest hit lies inside a triangle (no tie at all)
+  std::int64_t holes = 0;         // ... of which where the raster shows nothing: a crack between triangles
   std::int64_t objects_differ = 0, objects_wrong = 0;  // the same two counts, for objects
 };
 Identity identity(const RasterTruth& truth, const RasterPixels& raster);

@@ -137,12 +137,12 @@ struct SceneRasterSpec {
   static SummaryTable summary_table(const Input& in, const TraceView&) {
     const RasterScene& s = *in.scene;
     const RasterTruth truth = raster_truth(s);
-    SummaryTable t{"Against the exact ray cast", {"mode", "differ", "edge ties", "wrong", "off ties"}, {}, std::nullopt};
+    SummaryTable t{"Against the exact ray cast", {"mode", "differ", "ties", "wrong", "holes"}, {}, std::nullopt};
     for (Numeric n : {Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact}) {
       const Identity id = identity(truth, draw(s, n));
       t.rows.push_back({0, 0, {{std::string(numeric_name(n)), std::nullopt}, {std::to_string(id.differ), std::nullopt},
                                {std::to_string(id.ties), std::nullopt}, {std::to_string(id.wrong), std::nullopt},
-                               {std::to_string(id.wrong_inside), std::nullopt}}});
+                               {std::to_string(id.holes), std::nullopt}}});
     }
     t.total = SummaryTable::Row{0, 0, {{"of " + std::to_string(truth.px.size()) + " pixels", std::nullopt}, {}, {}, {}, {}}};
     return t;

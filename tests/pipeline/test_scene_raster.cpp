@@ -281,10 +281,11 @@ TEST_CASE("scene raster on the command line: the image, the depth buffer and the
   REQUIRE(row != std::string::npos);
   std::istringstream cells(ok.out.substr(row + 8));
   double seconds = 0;
-  long differ = -1, ties = -1, wrong = -1, inside = -1;
-  cells >> seconds >> differ >> ties >> wrong >> inside;
+  long differ = -1, ties = -1, wrong = -1, inside = -1, holes = -1;
+  cells >> seconds >> differ >> ties >> wrong >> inside >> holes;
   CHECK(wrong == 0);
   CHECK(inside == 0);
+  CHECK(holes == 0);
   CHECK(differ == ties);
   CHECK(ties > 0);  // the box's walls meet on pixel centres at 48 x 48
   for (const std::string bad : {" --size 0x4", " --stacks 1", " --numeric int", " --shading flat"}) {
