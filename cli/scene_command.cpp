@@ -56,6 +56,9 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.raster->add_option("--stacks", c.stacks, "A sphere's bands of latitude (2 stacks slices of longitude), 2..256; default 12");
   c.raster->add_option("--depth", c.depth_out, "Also write the depth buffer as a grey PNG (near black, far white)");
   c.raster->add_flag("--identity", c.identity, "Compare every pixel with the exact ray cast (scene-hit), drawn in float, double, filtered and exact");
+  c.raster->add_option("--max-work", c.max_work, "Refuse exact or filtered work (and --identity) that implies more units (default " +
+                                                     std::to_string(pipespec::kDefaultMaxWork) + "; docs/cli.md)")
+      ->check(CLI::Validator(budget_count_error, "COUNT"));
   c.raster->add_flag("--quiet", c.quiet, "No summary");
 }
 
@@ -137,6 +140,17 @@ int raster(const SceneCommands& c) {
     pipespec::RasterPixels px = pipespec::draw(*rs, n, fb);
     return std::pair{std::move(px), std::chrono::duration<double>(clock::now() - t).count()};
   };
+  // The budget, before any exact work: the units the exact modes and the ray casts imply, with
+  // double's fragments standing for the exact ones.
+  if (c.identity || mode == Numeric::exact || mode == Numeric::filtered) {
+    const std::uint64_t fragments = std::uint64_t(pipespec::draw(*rs, Numeric::f64).fragments);
+    const std::uint64_t work = pipespec::kWorkPerTriangle * rs->tris.size() + pipespec::kWorkPerFragment * fragments +
+                               (c.identity ? pipespec::kWorkPerRay * std::uint64_t(rs->width * rs->height) : 0);
+    if (work > c.max_work)
+      throw InputError("this scene implies about " + std::to_string(work) + " units of exact work (" + std::to_string(rs->tris.size()) +
+                       " triangles x 50, " + std::to_string(fragments) + " fragments" + (c.identity ? ", a ray a pixel x 3" : "") +
+                       "), more than the budget of " + std::to_string(c.max_work) + " (--max-work raises it)");
+  }
   bool fell_back = false;
   const auto [px, seconds] = timed(mode, &fell_back);
   std::ostringstream report;

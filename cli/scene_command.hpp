@@ -28,6 +28,7 @@ struct SceneCommands {
   std::string numeric = "double", shading = "phong", depth_out;  // raster
   int stacks = 12;
   bool identity = false;
+  std::uint64_t max_work = pipespec::kDefaultMaxWork;
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

@@ -20,6 +20,15 @@ namespace tracer {
 inline constexpr std::uint64_t kDefaultMaxRays = std::uint64_t{1} << 26;
 }  // namespace tracer
 
+namespace pipespec {
+// The work budget of `scene raster` in exact and filtered modes and with --identity (docs/cli.md),
+// in units of about 5 us of exact arithmetic on this machine: a triangle carried to the screen
+// costs 50 (250 us: its corners, its clip and its divide in rationals), a fragment 1 (double's
+// count), a pixel's exact ray cast 3. 2^21 units keep the largest accepted draw within about 10 s.
+inline constexpr std::uint64_t kDefaultMaxWork = std::uint64_t{1} << 21;
+inline constexpr std::uint64_t kWorkPerTriangle = 50, kWorkPerFragment = 1, kWorkPerRay = 3;
+}  // namespace pipespec
+
 // In exact, filtered and reference modes a step costs more the longer the input's exact numbers: a step counts
 // 1 + (longest string) / kDigitsPerWeight against max_steps (measured on dda-grid-walk: 1.3 us a
 // step at 1 character, 5.5 us at 2000, 12 us at 4000; docs/cli.md).

@@ -76,6 +76,10 @@ struct Picture {
   };
   std::string notes_title;  // "Planner"
   std::vector<Note> notes;
+  // A second image of the same size in grey levels, one byte a pixel (a rasterized picture's depth
+  // buffer), shown under the notes with its caption; empty for none.
+  std::vector<std::uint8_t> grey;
+  std::string grey_caption;
 };
 
 // What an algorithm's picture offers (Run::picture): a click on picture pixel (i, j) sets the

@@ -1271,6 +1271,8 @@ def budget_cases(M, exe, first, lessons, source, traces, setup_failures):
             return lambda o, i: (["lesson", "lint", lesson], {})
         if sub == "scene render" and os.path.exists(scene):
             return lambda o, i: (["scene", "render", scene, "--size", "8x6", "--quiet", "--out", os.path.join(o, "x.png")], {})
+        if sub == "scene raster" and os.path.exists(scene):
+            return lambda o, i: (["scene", "raster", scene, "--size", "8x6", "--identity", "--quiet", "--out", os.path.join(o, "x.png")], {})
         return None
 
     for path in leaf_subcommands(exe):

@@ -44,6 +44,7 @@ std::string picture_key(const Json& input, std::string_view pick) {
 
 SceneCanvas::~SceneCanvas() {
   if (tex_) host_->destroy(tex_);
+  if (grey_tex_) host_->destroy(grey_tex_);
 }
 
 std::array<float, 4> SceneCanvas::pixel_rect(std::int64_t i, std::int64_t j) const {
@@ -65,12 +66,18 @@ void SceneCanvas::refresh(const TraceModel& m) {
       error_ = e.what();
     }
     if (tex_) host_->destroy(tex_), tex_ = nullptr;
+    if (grey_tex_) host_->destroy(grey_tex_), grey_tex_ = nullptr;
     if (picture_.width > 0) {
-      std::vector<std::uint32_t> px(picture_.rgb.size() / 3);
-      for (std::size_t k = 0; k < px.size(); ++k)
-        px[k] = IM_COL32(picture_.rgb[3 * k], picture_.rgb[3 * k + 1], picture_.rgb[3 * k + 2], 255);
+      const std::size_t n = std::size_t(picture_.width * picture_.height);
+      std::vector<std::uint32_t> px(n);
+      for (std::size_t k = 0; k < n; ++k) px[k] = IM_COL32(picture_.rgb[3 * k], picture_.rgb[3 * k + 1], picture_.rgb[3 * k + 2], 255);
       tex_ = host_->create(int(picture_.width), int(picture_.height));
       host_->update(tex_, 0, 0, int(picture_.width), int(picture_.height), px.data(), int(picture_.width));
+      if (picture_.grey.size() == n) {
+        for (std::size_t k = 0; k < n; ++k) px[k] = IM_COL32(picture_.grey[k], picture_.grey[k], picture_.grey[k], 255);
+        grey_tex_ = host_->create(int(picture_.width), int(picture_.height));
+        host_->update(grey_tex_, 0, 0, int(picture_.width), int(picture_.height), px.data(), int(picture_.width));
+      }
     }
   }
   if (summarised_ != &m) summarised_ = &m, summary_ = alg.summary_table ? m.run().summary_table(m.trace()) : SummaryTable{};
@@ -163,6 +170,10 @@ void SceneCanvas::draw_side(const TraceModel& m, const CanvasInput& in, CanvasEv
       ImGui::PopStyleColor();
       ImGui::Unindent();
     }
+  }
+  if (grey_tex_ && !in.hide_sweep && ImGui::CollapsingHeader(picture_.grey_caption.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+    const float w = std::min(ImGui::GetContentRegionAvail().x, 2.f * float(picture_.width));
+    ImGui::Image(grey_tex_, ImVec2(w, w * float(picture_.height) / float(std::max<std::int64_t>(picture_.width, 1))));
   }
   const SummaryTable& t = summary_;
   if (t.columns.empty() || !ImGui::CollapsingHeader(t.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;

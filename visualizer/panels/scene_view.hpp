@@ -36,7 +36,7 @@ class SceneCanvas final : public Canvas {
   void draw_side(const TraceModel& m, const CanvasInput& in, CanvasEvents& ev);
 
   TextureHost* host_;
-  ImTextureID tex_ = nullptr;
+  ImTextureID tex_ = nullptr, grey_tex_ = nullptr;  // the picture and its grey image
   std::string key_;  // the input the picture was made for, without its pick
   Picture picture_;
   std::string error_;
