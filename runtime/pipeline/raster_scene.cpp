@@ -269,7 +269,17 @@ std::shared_ptr<const RasterScene> raster_scene(std::shared_ptr<const tracer::Sc
         const int m = ax <= ay && ax <= az ? 0 : ay <= az ? 1 : 2;
         Vec3<Rational> e{};
         e[m] = 1;
-        const Vec3<Rational> A = cross(nv, e), B = cross(nv, A);
+        // Scaled by a power of two to the size of the point and the eye: the same wedges exactly,
+        // but a rounded cut between p and a point at infinity then blends numbers of one size.
+        const double size = std::max({1.0, std::abs(to_double3(p).x), std::abs(to_double3(p).y), std::abs(to_double3(p).z),
+                                      std::abs(s.camera.eye.x.get_d()), std::abs(s.camera.eye.y.get_d()), std::abs(s.camera.eye.z.get_d())});
+        const Vec3<Rational> A0 = cross(nv, e), B0 = cross(nv, A0);
+        const auto scaled = [&](const Vec3<Rational>& d) {
+          const Vec3<double> x = to_double3(d);
+          const double m = std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)});
+          return Vec3<Rational>(num::to_rational(std::exp2(std::round(std::log2(size / m)))) * d);
+        };
+        const Vec3<Rational> A = scaled(A0), B = scaled(B0);
         const Vec3<Rational> mA = Rational(-1) * A, mB = Rational(-1) * B;
         const Vec3<double> n = unit_d(to_double3(nv));
         for (const auto& [a, b] : {std::pair{A, B}, std::pair{B, mA}, std::pair{mA, mB}, std::pair{mB, A}}) add({point(p), toward(a), toward(b)}, {n, n, n});
