@@ -121,8 +121,13 @@ class Interval;  // core/interval.hpp
 namespace num {
 
 // Largest integer <= x, and smallest integer >= x.
-inline std::int64_t floor_int(float x) { return static_cast<std::int64_t>(std::floor(x)); }
-inline std::int64_t floor_int(double x) { return static_cast<std::int64_t>(std::floor(x)); }
+// Truncation, one less below a negative fraction: std::floor is a call into libm on the x86-64
+// baseline (no SSE4.1 rounding), and the z-buffer floors once a fragment. Precondition: x fits.
+inline std::int64_t floor_int(double x) {
+  const auto t = static_cast<std::int64_t>(x);
+  return t - (x < static_cast<double>(t));
+}
+inline std::int64_t floor_int(float x) { return floor_int(static_cast<double>(x)); }
 inline std::int64_t floor_int(std::int64_t x) { return x; }
 inline std::int64_t floor_int(const Rational& x) {
   mpz_class q;

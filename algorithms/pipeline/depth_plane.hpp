@@ -29,12 +29,17 @@ template <class Num> DepthPlane<Num> depth_plane(const std::array<Vec3<Num>, 3>&
   return p;
 }
 
-// The samples triangle-edge covers in a width x height window, in its order (rows bottom up).
-template <class Num> std::vector<Pixel> covered_samples(const std::array<Vec3<Num>, 3>& v, std::int64_t width, std::int64_t height) {
-  std::vector<Pixel> out;
+// The samples triangle-edge covers in a width x height window, in its order (rows bottom up),
+// into out (cleared first: a z-buffer reuses one vector for all its triangles).
+template <class Num> void covered_samples(const std::array<Vec3<Num>, 3>& v, std::int64_t width, std::int64_t height, std::vector<Pixel>& out) {
+  out.clear();
   NoProbe quiet;
   const std::array<Vec2<Num>, 3> xy{Vec2<Num>{v[0].x, v[0].y}, Vec2<Num>{v[1].x, v[1].y}, Vec2<Num>{v[2].x, v[2].y}};
   fill::triangle_edge<Num>(fill::EdgeTriangle<Num>{xy, Num(1), fill::SampleBox{0, width - 1, 0, height - 1}}, out, quiet);
+}
+template <class Num> std::vector<Pixel> covered_samples(const std::array<Vec3<Num>, 3>& v, std::int64_t width, std::int64_t height) {
+  std::vector<Pixel> out;
+  covered_samples(v, width, height, out);
   return out;
 }
 

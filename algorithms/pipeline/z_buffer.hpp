@@ -55,6 +55,7 @@ DepthBuffer<Num> z_buffer(std::int64_t width, std::int64_t height, const std::ve
   auto stored = [&](const Num& z) { return bits == 0 ? z : Num(num::floor_div(Num(z * M + Num(1) / Num(2)), Num(1))); };
   DepthBuffer<Num> buf{width, height, std::vector<Num>(width * height, stored(clear)), std::vector<std::int64_t>(width * height, -1)};
   if constexpr (Probe::on) probe.step(L::clear, StepKind::init).num("clear", buf.depth.empty() ? clear : buf.depth[0]).num("r", r);
+  std::vector<Pixel> samples;
   for (const DepthTriangle<Num>& t : tris) {
     const DepthPlane<Num> plane = depth_plane(t.v);
     const Vec3<Num>&a = t.v[0], &b = t.v[1], &c = t.v[2];
@@ -69,7 +70,7 @@ DepthBuffer<Num> z_buffer(std::int64_t width, std::int64_t height, const std::ve
     }
     const Num o = Num(t.factor * std::max(num::abs(zx), num::abs(zy)) + t.units * r);
     if constexpr (Probe::on) probe.step(L::offset, StepKind::advance).num("o", o);
-    const std::vector<Pixel> samples = covered_samples(t.v, width, height);
+    covered_samples(t.v, width, height, samples);
     if constexpr (Probe::on) probe.step(L::cover, StepKind::advance).idx("samples", std::int64_t(samples.size()));
     for (const Pixel& s : samples) {
       const Num z = std::clamp(Num(plane.at(Num(s.x), Num(s.y)) + o), Num(0), Num(1));

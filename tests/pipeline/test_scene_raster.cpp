@@ -13,6 +13,7 @@
 #include "pipeline/raster_truth.hpp"
 #include "tracer/history.hpp"
 #include "pipeline_test_support.hpp"
+#include "raster_test_support.hpp"
 #include "cli_harness.hpp"
 #include "run.hpp"
 
@@ -151,43 +152,7 @@ TEST_CASE("scene-raster: a floor near 10^6 reaches its horizon in float too", "[
   }
 }
 
-namespace {
-
-using V4 = pipe::Vec4<Rational>;
-
-// The view volume's part of a clip-space triangle by brute force: the points sum_k l_k c_k with
-// l >= 0, l_0 + l_1 + l_2 = 1, inside the five planes, are a polygon in (l_1, l_2); its corners
-// are where two of the eight boundary lines meet inside all of them.
-std::vector<V4> clipped_by_half_planes(const std::array<V4, 3>& c) {
-  // Each constraint a0 + a1 l1 + a2 l2 >= 0.
-  std::vector<std::array<Rational, 3>> h{{0, 1, 0}, {0, 0, 1}, {1, -1, -1}};
-  auto dist = [](int p, const V4& v) {  // near, left, right, bottom, top, written out here
-    const Rational d[5] = {v.z + v.w, v.x + v.w, v.w - v.x, v.y + v.w, v.w - v.y};
-    return d[p];
-  };
-  for (int p = 0; p < 5; ++p) {
-    const Rational d0 = dist(p, c[0]), d1 = dist(p, c[1]), d2 = dist(p, c[2]);
-    h.push_back({d0, d1 - d0, d2 - d0});
-  }
-  std::vector<V4> out;
-  for (std::size_t a = 0; a < h.size(); ++a)
-    for (std::size_t b = a + 1; b < h.size(); ++b) {
-      const Rational det = h[a][1] * h[b][2] - h[a][2] * h[b][1];
-      if (det == 0) continue;
-      const Rational l1 = (-h[a][0] * h[b][2] + h[b][0] * h[a][2]) / det, l2 = (-h[a][1] * h[b][0] + h[b][1] * h[a][0]) / det;
-      bool in = true;
-      for (const auto& x : h) in = in && x[0] + x[1] * l1 + x[2] * l2 >= 0;
-      if (!in) continue;
-      const Rational l0 = 1 - l1 - l2;
-      const V4 v{l0 * c[0].x + l1 * c[1].x + l2 * c[2].x, l0 * c[0].y + l1 * c[1].y + l2 * c[2].y, l0 * c[0].z + l1 * c[1].z + l2 * c[2].z,
-                 l0 * c[0].w + l1 * c[1].w + l2 * c[2].w};
-      if (std::none_of(out.begin(), out.end(), [&](const V4& o) { return o.x == v.x && o.y == v.y && o.z == v.z && o.w == v.w; })) out.push_back(v);
-    }
-  if (out.size() < 3) out.clear();
-  return out;
-}
-
-}  // namespace
+using testing::raster::V4;
 
 TEST_CASE("clip-volume keeps exactly the triangle's part inside the view volume, with its edges' origins", "[pipeline][raster][clip]") {
   std::mt19937_64 rng(7);
@@ -198,13 +163,13 @@ TEST_CASE("clip-volume keeps exactly the triangle's part inside the view volume,
     for (auto& v : c) v = {coord(), coord(), coord(), n % 5 == 0 && &v == &c[2] ? Rational(0) : testing::ratio(int(rng() % 300) - 100, 64)};
     NoProbe none;
     const pipe::ClippedPolygon<Rational> K = pipe::clip_volume<Rational>(c, none);
-    const std::vector<V4> want = clipped_by_half_planes(c);
+    const std::vector<V4> want = testing::raster::brute_clip(c);
     INFO("case " << n);
     REQUIRE(std::size_t(K.k) == want.size());
     for (int k = 0; k < K.k; ++k) {
       const V4& v = K.v[k].c;
       CHECK(v.w > 0);
-      CHECK(std::any_of(want.begin(), want.end(), [&](const V4& o) { return o.x == v.x && o.y == v.y && o.z == v.z && o.w == v.w; }));
+      CHECK(std::any_of(want.begin(), want.end(), [&](const V4& o) { return testing::raster::same(o, v); }));
       // An edge said to lie on the triangle's edge e: both its ends are blends of e's two corners.
       const int e = K.v[k].edge;
       if (e < 0) continue;

@@ -7,6 +7,7 @@
 #include "catalog.hpp"
 #include "pipeline/raster_scene.hpp"
 #include "pipeline_test_support.hpp"
+#include "raster_test_support.hpp"
 #include "tracer/history.hpp"
 
 using namespace sw;
@@ -15,45 +16,16 @@ using namespace sw::pipespec;
 
 namespace {
 
-using V4 = pipe::Vec4<Rational>;
+using raster::V4, raster::same, raster::plane_distance, raster::brute_clip;
 
 V4 times(const std::array<Rational, 16>& m, const V4& x) {
   std::array<Rational, 4> o;
   for (int r = 0; r < 4; ++r) o[r] = m[4 * r] * x.x + m[4 * r + 1] * x.y + m[4 * r + 2] * x.z + m[4 * r + 3] * x.w;
   return {o[0], o[1], o[2], o[3]};
 }
-bool same(const V4& a, const V4& b) { return a.x == b.x && a.y == b.y && a.z == b.z && a.w == b.w; }
 V4 list4(StepValues& sv, const std::string& name) {
   CHECK(sv[name + ".size"] == 4);
   return {sv[name + "[0]"], sv[name + "[1]"], sv[name + "[2]"], sv[name + "[3]"]};
-}
-Rational plane_distance(int p, const V4& v) {  // near, left, right, bottom, top
-  const Rational d[5] = {v.z + v.w, v.x + v.w, v.w - v.x, v.y + v.w, v.w - v.y};
-  return d[p];
-}
-
-// The corners of {sum l_k c_k : l >= 0, sum l = 1} inside planes [first, 5), by vertex enumeration.
-std::vector<V4> brute_clip(const std::array<V4, 3>& c, int first) {
-  std::vector<std::array<Rational, 3>> h{{0, 1, 0}, {0, 0, 1}, {1, -1, -1}};
-  for (int p = first; p < 5; ++p) {
-    const Rational d0 = plane_distance(p, c[0]);
-    h.push_back({d0, plane_distance(p, c[1]) - d0, plane_distance(p, c[2]) - d0});
-  }
-  std::vector<V4> out;
-  for (std::size_t a = 0; a < h.size(); ++a)
-    for (std::size_t b = a + 1; b < h.size(); ++b) {
-      const Rational det = h[a][1] * h[b][2] - h[a][2] * h[b][1];
-      if (det == 0) continue;
-      const Rational l1 = (h[b][0] * h[a][2] - h[a][0] * h[b][2]) / det, l2 = (h[a][0] * h[b][1] - h[b][0] * h[a][1]) / det;
-      bool in = true;
-      for (const auto& x : h) in = in && x[0] + x[1] * l1 + x[2] * l2 >= 0;
-      const Rational l0 = 1 - l1 - l2;
-      const V4 v{l0 * c[0].x + l1 * c[1].x + l2 * c[2].x, l0 * c[0].y + l1 * c[1].y + l2 * c[2].y, l0 * c[0].z + l1 * c[1].z + l2 * c[2].z,
-                 l0 * c[0].w + l1 * c[1].w + l2 * c[2].w};
-      if (in && std::none_of(out.begin(), out.end(), [&](const V4& o) { return same(o, v); })) out.push_back(v);
-    }
-  if (out.size() < 3) out.clear();
-  return out;
 }
 
 std::vector<Json> step_inputs() {
