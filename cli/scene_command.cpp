@@ -15,6 +15,7 @@
 #include "tracer/plan.hpp"
 #include "pipeline/raster_shade.hpp"
 #include "pipeline/raster_truth.hpp"
+#include "shadows/shadow_map_input.hpp"
 #include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"
 #include "tracer/scene.hpp"
@@ -59,6 +60,14 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.raster->add_option("--max-work", c.max_work, "Refuse exact or filtered work (and --identity) that implies more units (default " +
                                                      std::to_string(pipespec::kDefaultMaxWork) + "; docs/cli.md)")
       ->check(CLI::Validator(budget_count_error, "COUNT"));
+  c.raster->add_option("--shadows", c.shadows, "none (default) or map: a shadow map per light whose shadows the planner cannot rule out")
+      ->check(CLI::IsMember({"none", "map"}));
+  c.raster->add_option("--map-size", c.map_size, "A shadow map's texels a side, per view (default 512; 1..2048)");
+  c.raster->add_option("--map-bits", c.map_bits, "A shadow map's depth bits: 16, 24 (default) or 0 (depth in the number type)");
+  c.raster->add_option("--map-bias", c.map_bias, "A constant subtracted from each point's depth in the light's window (default 1/65536)");
+  c.raster->add_option("--map-slope", c.map_slope, "Times the point's own depth slope, subtracted too (default 2; glPolygonOffset's factor)");
+  c.raster->add_option("--map-pcf", c.map_pcf, "Percentage-closer filtering over k x k texels, k odd (default 1: none)");
+  c.raster->add_flag("--all-effects", c.all_effects, "A shadow pass for every light, not only those the planner keeps");
   c.raster->add_flag("--quiet", c.quiet, "No summary");
 }
 
@@ -121,6 +130,35 @@ int render(const SceneCommands& c) {
   return 0;
 }
 
+// The shadow map options of `scene raster` (--map-*), validated.
+shadowspec::MapOptions map_options(const SceneCommands& c) {
+  const Json map{{"size", c.map_size}, {"depth_bits", c.map_bits}, {"pcf", c.map_pcf}, {"bias", c.map_bias}, {"slope", c.map_slope}};
+  try {
+    return shadowspec::parse_map_options(map, "map", shadowspec::kMaxMapSize);
+  } catch (const InputError& e) {
+    throw InputError("--" + std::string(e.what()).replace(0, 4, "map-"));  // "map.pcf: ..." -> "--map-pcf: ..."
+  }
+}
+
+// A line per light of `scene raster --shadows map`: its map's outcome, or why it had no pass.
+void report_shadows(const shadowspec::SceneShadows& sh, std::int64_t map_size, std::ostream& report) {
+  for (const shadowspec::LightShadows& l : sh.lights) {
+    report << "light " << l.light << ": ";
+    if (!l.pass) {
+      report << "no shadow pass (" << l.skipped << ")\n";
+      continue;
+    }
+    const shadowspec::MapPixels& m = l.map;
+    std::int64_t shadowed = 0, reached = 0;
+    for (std::size_t k = 0; k < m.lit.size(); ++k) shadowed += m.lit[k] == 0, reached += m.visible[k] == 1;
+    const auto& v = l.in->views;
+    report << v.views.size() << (v.cube ? " cube faces" : v.views[0].orthographic ? " orthographic view" : " view") << " of " << map_size << "^2; "
+           << l.in->points.size() << " points seen, " << shadowed << " in shadow by the map, " << reached << " reached exactly, " << m.away
+           << " facing away; of those facing it, on the map: acne " << m.acne << ", peter-panning " << m.peter_panning << "; off the map (called lit) "
+           << m.outside << ", " << m.outside_shadowed << " of them shadowed exactly\n";
+  }
+}
+
 // `scene raster`: the image in the chosen mode; with --identity, each mode's pixels against the
 // exact ray cast, timed. Everything is drawn and judged before a file is written.
 int raster(const SceneCommands& c) {
@@ -144,11 +182,16 @@ int raster(const SceneCommands& c) {
   // double's fragments standing for the exact ones.
   if (c.identity || mode == Numeric::exact || mode == Numeric::filtered) {
     const std::uint64_t fragments = std::uint64_t(pipespec::draw(*rs, Numeric::f64).fragments);
+    // A shadow pass per light: at most six views, each its triangles and its texels' fragments.
+    const std::uint64_t maps = c.shadows == "map" && mode != Numeric::f32 && mode != Numeric::f64
+                                   ? rs->scene->lights.size() * 6 * (pipespec::kWorkPerTriangle * rs->tris.size() + std::uint64_t(c.map_size * c.map_size))
+                                   : 0;
     const std::uint64_t work = pipespec::kWorkPerTriangle * rs->tris.size() + pipespec::kWorkPerFragment * fragments +
-                               (c.identity ? pipespec::kWorkPerRay * std::uint64_t(rs->width * rs->height) : 0);
+                               (c.identity ? pipespec::kWorkPerRay * std::uint64_t(rs->width * rs->height) : 0) + maps;
     if (work > c.max_work)
       throw InputError("this scene implies about " + std::to_string(work) + " units of exact work (" + std::to_string(rs->tris.size()) +
                        " triangles x 50, " + std::to_string(fragments) + " fragments" + (c.identity ? ", a ray a pixel x 3" : "") +
+                       (maps ? ", shadow maps " + std::to_string(maps) : "") +
                        "), more than the budget of " + std::to_string(c.max_work) + " (--max-work raises it)");
   }
   bool fell_back = false;
@@ -160,7 +203,7 @@ int raster(const SceneCommands& c) {
          << " window triangles, " << px.fragments << " fragments; " << seconds << " s (scene prepared in " << prepared << " s)\n"
          << "near plane at eye depth " << rs->camera.near.get_d() << " (half the nearest surface in view), far plane at infinity; "
          << pipespec::shading_name(c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong)
-         << " shading; not drawn: shadows, mirror and glass rays (a rasterizer lights locally)\n";
+         << " shading; shadows: " << (c.shadows == "map" ? "shadow maps" : "none") << "; not drawn: mirror and glass rays (a rasterizer lights locally)\n";
   if (c.identity) {
     const auto t = clock::now();
     const pipespec::RasterTruth truth = pipespec::raster_truth(*rs, 0);
@@ -180,8 +223,14 @@ int raster(const SceneCommands& c) {
               "wrong: another primitive than GL's rule gives; inside: of those, where the closest hit lies inside a triangle (no tie); holes: of "
               "those, where the raster shows nothing (a crack)\n";
   }
-  const std::vector<std::uint8_t> rgb =
-      tracer::to_rgb8(pipespec::shade_pixels(*rs, px, c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong));
+  std::vector<std::uint32_t> blocked(px.objects.size(), 0);
+  if (c.shadows == "map") {
+    const shadowspec::SceneShadows sh = shadowspec::scene_shadows(rs, map_options(c), mode, c.all_effects);
+    report_shadows(sh, c.map_size, report);
+    blocked = sh.blocked;
+  }
+  const std::vector<std::uint8_t> rgb = tracer::to_rgb8(
+      pipespec::shade_pixels(*rs, px, c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong, &blocked));
   write_png(c.out, rgb.data(), static_cast<int>(px.width), static_cast<int>(px.height), 3);
   if (!c.depth_out.empty()) {
     const std::vector<std::uint8_t> grey = pipespec::depth_grey(px);

@@ -29,6 +29,10 @@ struct SceneCommands {
   int stacks = 12;
   bool identity = false;
   std::uint64_t max_work = pipespec::kDefaultMaxWork;
+  std::string shadows = "none";  // raster
+  std::int64_t map_size = 512, map_pcf = 1;
+  int map_bits = 24;
+  std::string map_bias = "1/65536", map_slope = "2";
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

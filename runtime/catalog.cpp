@@ -11,7 +11,7 @@ namespace {
 
 // The families in the order of the course (and of `stepwise list`, which sorts each family's
 // algorithms by id); a family folder not named here sorts after them by name.
-constexpr std::array<std::string_view, 8> kFamilyOrder = {"lines", "curves", "rays", "fill", "spatial", "lighting", "tracer", "pipeline"};
+constexpr std::array<std::string_view, 9> kFamilyOrder = {"lines", "curves", "rays", "fill", "spatial", "lighting", "tracer", "pipeline", "shadows"};
 
 struct Registration {
   Algorithm (*make)();

@@ -18,13 +18,18 @@
 
 namespace sw::pipe {
 
-// Preconditions: u, v, n independent; window[0] < window[1], window[2] < window[3]; 0 < near.
+// Preconditions: u, v, n independent; window[0] < window[1], window[2] < window[3]; 0 < near;
+// orthographic: near < far.
 template <class Num> struct RasterCamera {
   Vec3<Num> eye, u, v, n;
   Num dist{};                 // the view plane's distance d
-  std::array<Num, 4> window{};  // [umin, umax, vmin, vmax] on the view plane
+  std::array<Num, 4> window{};  // [umin, umax, vmin, vmax] on the view plane (orthographic: in eye space)
   Num near{};                 // the near plane's eye depth
   std::int64_t width = 1, height = 1;
+  // glOrtho instead of the perspective (a directional light's view), depth linear from near to
+  // far; eye may then lie anywhere on the light's side, and depth may be negative.
+  bool orthographic = false;
+  Num far{};
 };
 
 // World corners, homogeneous: w = 1, or w = 0 for a point at infinity (a plane's wedge).
@@ -44,7 +49,7 @@ struct SceneRaster {
   static constexpr std::string_view summary = "A ray-tracer scene rasterized: clip-space transform, clipping, divide, viewport, z-buffer";
 #define SW_PIPELINE_SCENE_RASTER(X) \
   X(view, "V <- (B^-1, -B^-1 eye), B = [u v n] the camera's frame          -- eye space: right, up, toward the eye") \
-  X(project, "P <- glFrustum(the view-plane window scaled to the near plane n), far plane at infinity; M <- P V") \
+  X(project, "P <- glFrustum(the view-plane window scaled to the near plane n), far plane at infinity (glOrtho: near to far); M <- P V") \
   X(corners, "for each triangle of the objects, in id order: c_k <- M x_k      -- x_k homogeneous: w = 0 at infinity") \
   X(clip, "    K <- clip-volume(c_0, c_1, c_2); if nothing is kept: next triangle") \
   X(divide, "    each corner of K: (x, y, depth) <- viewport((c_x, c_y, c_z)/c_w)   -- sample (i, j) is GL's pixel centre") \
@@ -62,12 +67,21 @@ template <class Num> Mat4<Num> raster_matrix(const RasterCamera<Num>& c) {
   const std::array<Vec3<Num>, 3> rows{(Num(1) / det) * cross(c.v, c.n), (Num(1) / det) * cross(c.n, c.u), (Num(1) / det) * cross(c.u, c.v)};
   Mat4<Num> V = identity<Num>();
   for (int k = 0; k < 3; ++k) V[k] = {rows[k].x, rows[k].y, rows[k].z, Num(-dot(rows[k], c.eye))};
+  if (c.orthographic) return product(projection_matrix(Projection<Num>{false, c.window[0], c.window[1], c.window[2], c.window[3], c.near, c.far}), V);
   const Num s = c.near / c.dist;
   return product(infinite_projection_matrix(Num(c.window[0] * s), Num(c.window[1] * s), Num(c.window[2] * s), Num(c.window[3] * s), c.near), V);
 }
 
+// offset: glPolygonOffset(factor, units) on every triangle; bits: the depth buffer's (0: depth in
+// Num). A shadow map's pass sets them; a picture draws with neither.
+template <class Num> struct DepthSettings {
+  Num factor{}, units{};
+  int bits = 0;
+};
+
 template <NumberType Num, StepProbe Probe = NoProbe>
-RasterImage<Num> scene_raster(const RasterCamera<Num>& cam, const std::vector<RasterTriangle<Num>>& tris, Probe& probe) {
+RasterImage<Num> scene_raster(const RasterCamera<Num>& cam, const std::vector<RasterTriangle<Num>>& tris, Probe& probe,
+                              const DepthSettings<Num>& depth = {}) {
   using L = SceneRaster;
   const Mat4<Num> M = raster_matrix(cam);
   if constexpr (Probe::on) {
@@ -113,7 +127,7 @@ RasterImage<Num> scene_raster(const RasterCamera<Num>& cam, const std::vector<Ra
       probe.step(L::divide, StepKind::advance).idx("corners", K.k).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(xy.data(), K.k)).label("K").replace();
     }
     for (int k = 1; k + 1 < K.k; ++k) {
-      window.push_back({{w[0], w[k], w[k + 1]}, std::int64_t(out.drawn.size()), Num(0), Num(0)});
+      window.push_back({{w[0], w[k], w[k + 1]}, std::int64_t(out.drawn.size()), depth.factor, depth.units});
       out.drawn.push_back({t.object, t.prim});
     }
     if constexpr (Probe::on) probe.step(L::fan, StepKind::advance).idx("triangles", K.k - 2).idx("drawn", std::int64_t(out.drawn.size()));
@@ -121,7 +135,7 @@ RasterImage<Num> scene_raster(const RasterCamera<Num>& cam, const std::vector<Ra
   if constexpr (Probe::on) probe.step(L::draw, StepKind::init).idx("triangles", std::int64_t(window.size()));
   out.buffer = [&] {
     const auto call = nested<ZBuffer>(probe);
-    return z_buffer(cam.width, cam.height, window, 0, DepthFunc::less, Num(1), probe);
+    return z_buffer(cam.width, cam.height, window, depth.bits, DepthFunc::less, Num(1), probe);
   }();
   if constexpr (Probe::on) probe.step(L::done, StepKind::done).idx("passed", out.buffer.passed).idx("culled", out.culled).idx("cut", out.cut);
   return out;

@@ -34,7 +34,7 @@ pipe::RasterCamera<Rational> tracer_camera(const tracer::Camera& c, std::int64_t
   }
   auto q = [](double x) { return num::to_rational(x); };
   auto q3 = [&](const Vec3<double>& x) { return Vec3<Rational>{q(x.x), q(x.y), q(x.z)}; };
-  return {q3(eye), q3(u), q3(v), q3(n), q(c.dist.d), {q(w[0]), q(w[1]), q(w[2]), q(w[3])}, Rational(0), width, height};
+  return {q3(eye), q3(u), q3(v), q3(n), q(c.dist.d), {q(w[0]), q(w[1]), q(w[2]), q(w[3])}, Rational(0), width, height, false, Rational(0)};
 }
 
 // The sphere's triangles by the documented rule: vertex (i, k) at polar angle pi i/S and azimuth
@@ -137,11 +137,10 @@ template <class Num> std::vector<Num> pyramid_depths(const pipe::Mat4<Num>& M, c
   return out;
 }
 
-// Half the least eye depth of any surface inside the view pyramid, so that the near plane cuts
-// nothing the tracer sees; the view plane's distance d when nothing is in view. A polygon that
-// reaches the eye holds it, so it is seen edge-on and covers no sample: it does not count.
 // Intervals bound every triangle's depths; the triangles that may hold the least are redone exactly.
-Rational derived_near(pipe::RasterCamera<Rational> cam, const std::vector<pipe::RasterTriangle<Rational>>& tris) {
+}  // namespace
+
+Rational near_plane(pipe::RasterCamera<Rational> cam, const std::vector<pipe::RasterTriangle<Rational>>& tris) {
   cam.near = Rational(1, 2);
   const pipe::Mat4<Rational> M = pipe::raster_matrix(cam);
   pipe::Mat4<Interval> Mi;
@@ -170,13 +169,15 @@ Rational derived_near(pipe::RasterCamera<Rational> cam, const std::vector<pipe::
   return least ? Rational(*least / 2) : cam.dist;
 }
 
-}  // namespace
-
 ray::Ray3<Rational> pixel_ray(const pipe::RasterCamera<Rational>& c, std::int64_t i, std::int64_t j) {
   const Rational half(1, 2);
   const Rational wu = c.window[0] + (Rational(i) + half) * (c.window[1] - c.window[0]) / Rational(c.width);
   const Rational wv = c.window[3] - (Rational(j) + half) * (c.window[3] - c.window[2]) / Rational(c.height);
-  const Vec3<Rational> d = Vec3<Rational>(Rational(-c.dist) * c.n) + Vec3<Rational>(wu * c.u) + Vec3<Rational>(wv * c.v);
+  const Vec3<Rational> across = Vec3<Rational>(wu * c.u) + Vec3<Rational>(wv * c.v);
+  // Orthographic: parallel rays down -n from the near plane, one unit of eye depth a unit of t
+  // (the frame's inverse turns n into eye space's z, so that direction is B (0, 0, -1)).
+  if (c.orthographic) return {c.eye + across + Vec3<Rational>(Rational(-c.near) * c.n), Vec3<Rational>(Rational(-1) * c.n)};
+  const Vec3<Rational> d = Vec3<Rational>(Rational(-c.dist) * c.n) + across;
   return {c.eye + Vec3<Rational>(Rational(c.near / c.dist) * d), d};
 }
 
@@ -295,7 +296,7 @@ std::shared_ptr<const RasterScene> raster_scene(std::shared_ptr<const tracer::Sc
     for (int v = 0; v < 3; ++v) pi.v[v] = to_num<Interval>(prim.v[v]);
     s.traced_iv.objects.push_back(pi);
   }
-  s.camera.near = derived_near(s.camera, s.tris);
+  s.camera.near = near_plane(s.camera, s.tris);
   return out;
 }
 

@@ -57,7 +57,7 @@ inline std::int32_t named_prim(const RasterScene& s, std::int32_t object, std::i
 template <class Num> pipe::RasterCamera<Num> camera_in(const pipe::RasterCamera<Rational>& c) {
   auto n = [](const Rational& q) { return num::from_rational<Num>(q); };
   return {to_num<Num>(c.eye), to_num<Num>(c.u), to_num<Num>(c.v), to_num<Num>(c.n), n(c.dist),
-          {n(c.window[0]), n(c.window[1]), n(c.window[2]), n(c.window[3])}, n(c.near), c.width, c.height};
+          {n(c.window[0]), n(c.window[1]), n(c.window[2]), n(c.window[3])}, n(c.near), c.width, c.height, c.orthographic, n(c.far)};
 }
 template <class Num> std::vector<pipe::RasterTriangle<Num>> triangles_in(const std::vector<pipe::RasterTriangle<Rational>>& tris) {
   std::vector<pipe::RasterTriangle<Num>> out(tris.size());
@@ -71,6 +71,12 @@ template <class Num> std::vector<pipe::RasterTriangle<Num>> triangles_in(const s
   }
   return out;
 }
+
+// A perspective camera's near plane: half the least eye depth of any surface inside its view
+// pyramid (the four sides' clip of every triangle), so that the near plane cuts nothing the
+// pyramid holds; the view plane's distance d when it holds nothing. A polygon that reaches the eye
+// holds it, so it is seen edge-on and covers no sample: it does not count.
+Rational near_plane(pipe::RasterCamera<Rational> cam, const std::vector<pipe::RasterTriangle<Rational>>& tris);
 
 // The exact ray of pixel (i, j), row 0 at the top, from the near plane: its origin is where the
 // tracer's ray through the pixel's centre crosses eye depth `near`, so its hits at t > 0 are those

@@ -104,7 +104,7 @@ struct Shader {
 
 }  // namespace
 
-std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels& px, Shading mode) {
+std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels& px, Shading mode, const std::vector<std::uint32_t>* blocked) {
   const Shader sh(s);
   std::vector<V3> out(px.objects.size(), sh.ts.background);
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -113,6 +113,7 @@ std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels&
     sc.eye = sh.eye, sc.scene_ambient = sh.ts.ambient, sc.lights = sh.ts.lights, sc.convention = lighting::Convention::models;
     for (std::int64_t i = 0; i < px.width; ++i) {
       const std::size_t k = static_cast<std::size_t>(j * px.width + i);
+      sc.blocked = blocked ? (*blocked)[k] : 0;
       if (px.objects[k] >= 0) out[k] = sh.pixel(sc, i, j, px.objects[k], px.prims[k], mode);
     }
   });

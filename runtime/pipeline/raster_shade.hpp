@@ -17,7 +17,9 @@ std::string_view shading_name(Shading s);
 // perspective-correct: the weights are those of the point the pixel's ray meets on the
 // triangle's plane. A plane has no vertices to light (its wedges reach infinity), so it is lit per
 // fragment in both modes.
-std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels& px, Shading mode);
+// blocked: per pixel, bit i set where light i is shadowed (it adds its ambient term only, as in
+// the tracer); none: every light reaches every pixel.
+std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels& px, Shading mode, const std::vector<std::uint32_t>* blocked = nullptr);
 
 // The depth buffer as grey levels, rows top first: near black, far white, nothing drawn white.
 // Window depth d = 1 - n/e is hyperbolic in the eye depth e, so the grey is log(e/n) = -log(1 - d),

@@ -34,7 +34,9 @@ template <class Num> bool inside_triangle(const RasterScene& s, const tracer::Hi
 bool covers(const RasterScene& s, const pipe::Mat4<Rational>& M, const Tri& v, const std::array<Rational, 3>& b, const Vec3<Rational>& Y) {
   if (b[0] > 0 && b[1] > 0 && b[2] > 0) return true;
   const Vec3<Rational> N = cross(Vec3<Rational>(v[1] - v[0]), Vec3<Rational>(v[2] - v[0]));
-  const bool ccw = dot(N, Vec3<Rational>(s.camera.eye - v[0])) > 0;  // front-facing: counter-clockwise on the screen
+  // Front-facing (the viewer on the normal's side) is counter-clockwise on the screen; an
+  // orthographic viewer lies toward +n.
+  const bool ccw = dot(N, s.camera.orthographic ? s.camera.n : Vec3<Rational>(s.camera.eye - v[0])) > 0;
   const pipe::Vec4<Rational> cy = pipe::apply(M, pipe::Vec4<Rational>{Y.x, Y.y, Y.z, Rational(1)});
   for (int j = 0; j < 3; ++j) {
     if (b[j] != 0) continue;
@@ -90,6 +92,8 @@ PixelTruth pixel_truth(const RasterScene& s, const pipe::Mat4<Rational>& M, std:
   PixelTruth p;
   NoProbe none;
   auto depth_at = [&](const Rational& t) {  // eye depth near + t d; window depth 1 - near/(eye depth)
+    p.t = t;
+    if (s.camera.orthographic) return Rational(t / (s.camera.far - s.camera.near)).get_d();  // the ray starts on the near plane
     const Rational e = s.camera.near + t * s.camera.dist;
     return Rational(1 - s.camera.near / e).get_d();
   };

@@ -21,6 +21,7 @@ struct PixelTruth {
   std::int32_t ray_object = -1, ray_prim = -1;  // scene-hit's closest hit
   bool boundary = false;                        // that hit lies on a triangle's edge or corner
   double depth = 1;                             // GL's answer's window depth, exact then rounded
+  Rational t;                                   // where pixel_ray meets GL's answer (0: none)
 };
 
 struct RasterTruth {

@@ -130,7 +130,7 @@ struct SceneRasterSpec {
   static Picture picture(const Input& in, std::int64_t) {
     const RasterScene& s = *in.scene;
     const RasterPixels px = draw(s, Numeric::f64);
-    Picture pic{s.width, s.height, 1, tracer::to_rgb8(shade_pixels(s, px, Shading::phong)), 0, "Rasterizer", {}};
+    Picture pic{s.width, s.height, 1, tracer::to_rgb8(shade_pixels(s, px, Shading::phong)), 0, "Rasterizer", {}, {}, {}};
     pic.notes.push_back({std::to_string(s.tris.size()) + " triangles, " + std::to_string(px.drawn) + " drawn after clipping", "", std::nullopt});
     pic.notes.push_back({"Local lighting only (Phong, in double)", "a rasterizer casts no shadow, mirror or glass ray", std::nullopt});
     pic.grey = depth_grey(px);

@@ -45,7 +45,7 @@ std::size_t history_steps(const HistoryInput& in) {
 // The scene view's picture: the scene through each pixel's centre, with the planner's decisions.
 Picture scene_picture(const HistoryInput& in, std::int64_t max_side) {
   const tracer::Preview p = tracer::render_preview(in, max_side);
-  Picture pic{p.width, p.height, p.scale, p.rgb, p.seconds, "Planner", {}};
+  Picture pic{p.width, p.height, p.scale, p.rgb, p.seconds, "Planner", {}, {}, {}};
   if (p.plan.all_effects) pic.notes.push_back({"All effects on (all_effects): nothing planned away.", "", std::nullopt});
   for (const tracer::Decision& d : p.plan.decisions)
     pic.notes.push_back({d.effect + " for " + d.subject + ": " + (d.on ? "on" : "off"), d.reason, d.on});
