@@ -107,4 +107,4 @@ TEST_CASE("check round trip: spatial", "[check][roundtrip]") { CHECK(round_trip_
 TEST_CASE("check round trip: lighting", "[check][roundtrip]") { CHECK(round_trip_family("lighting") > 50); }
 TEST_CASE("check round trip: tracer", "[check][roundtrip]") { CHECK(round_trip_family("tracer") >= 5); }
 TEST_CASE("check round trip: pipeline", "[check][roundtrip]") { CHECK(round_trip_family("pipeline") > 50); }
-TEST_CASE("check round trip: shadows", "[check][roundtrip]") { CHECK(round_trip_family("shadows") > 20); }
+TEST_CASE("check round trip: shadows", "[check][roundtrip]") { CHECK(round_trip_family("shadows") >= 16); }
