@@ -15,7 +15,7 @@
 #include "tracer/plan.hpp"
 #include "pipeline/raster_shade.hpp"
 #include "pipeline/raster_truth.hpp"
-#include "shadows/shadow_map_input.hpp"
+#include "shadows/scene_shadows.hpp"
 #include "tracer/pov_export.hpp"
 #include "tracer/render.hpp"
 #include "tracer/scene.hpp"
@@ -60,8 +60,10 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.raster->add_option("--max-work", c.max_work, "Refuse exact or filtered work (and --identity) that implies more units (default " +
                                                      std::to_string(pipespec::kDefaultMaxWork) + "; docs/cli.md)")
       ->check(CLI::Validator(budget_count_error, "COUNT"));
-  c.raster->add_option("--shadows", c.shadows, "none (default) or map: a shadow map per light whose shadows the planner cannot rule out")
-      ->check(CLI::IsMember({"none", "map"}));
+  c.raster->add_option("--shadows", c.shadows, "none (default), map or volume: a shadow map or stencil volumes per light whose shadows the planner cannot rule out")
+      ->check(CLI::IsMember({"none", "map", "volume"}));
+  c.raster->add_option("--volume", c.volume, "With --shadows volume: zfail (default; counts behind the surface, with caps) or zpass (in front; wrong with the eye in a volume)")
+      ->check(CLI::IsMember({"zfail", "zpass"}));
   c.raster->add_option("--map-size", c.map_size, "A shadow map's texels a side, per view (default 512; 1..2048)");
   c.raster->add_option("--map-bits", c.map_bits, "A shadow map's depth bits: 16, 24 (default) or 0 (depth in the number type)");
   c.raster->add_option("--map-bias", c.map_bias, "A constant subtracted from each point's depth in the light's window (default 1/65536)");
@@ -140,12 +142,23 @@ shadowspec::MapOptions map_options(const SceneCommands& c) {
   }
 }
 
-// A line per light of `scene raster --shadows map`: its map's outcome, or why it had no pass.
+// A line per light of `scene raster --shadows map|volume`: its pass's outcome, or why it had none.
 void report_shadows(const shadowspec::SceneShadows& sh, std::int64_t map_size, std::ostream& report) {
   for (const shadowspec::LightShadows& l : sh.lights) {
     report << "light " << l.light << ": ";
     if (!l.pass) {
       report << "no shadow pass (" << l.skipped << ")\n";
+      continue;
+    }
+    if (sh.method != shadowspec::ShadowMethod::map) {
+      const shadowspec::VolumePixels& v = l.volume;
+      const bool zfail = sh.method == shadowspec::ShadowMethod::volume_zfail;
+      std::int64_t shadowed = 0, reached = 0;
+      for (std::size_t k = 0; k < v.lit.size(); ++k) shadowed += v.lit[k] == 0, reached += v.visible[k] == 1;
+      report << (zfail ? "z-fail" : "z-pass") << " stencil volumes: " << v.casters << " casters, " << v.silhouette << " silhouette edges, " << v.faces
+             << " faces, " << v.fragments << " fragments; " << l.in->points.size() << " points seen, " << shadowed << " in shadow by the count, " << reached
+             << " reached exactly, " << v.away << " facing away; of those facing it, wrong " << (zfail ? v.wrong_fail : v.wrong_pass) << " by "
+             << (zfail ? "z-fail" : "z-pass") << " (" << (zfail ? v.wrong_pass : v.wrong_fail) << " by " << (zfail ? "z-pass" : "z-fail") << ")\n";
       continue;
     }
     const shadowspec::MapPixels& m = l.map;
@@ -162,6 +175,7 @@ void report_shadows(const shadowspec::SceneShadows& sh, std::int64_t map_size, s
 // `scene raster`: the image in the chosen mode; with --identity, each mode's pixels against the
 // exact ray cast, timed. Everything is drawn and judged before a file is written.
 int raster(const SceneCommands& c) {
+  if (c.volume && c.shadows != "volume") throw InputError("--volume: only with --shadows volume (got --shadows " + c.shadows + ")");
   pipespec::RasterOptions o;
   parse_size(c.size, o.width, o.height);
   o.stacks = c.stacks;
@@ -183,9 +197,12 @@ int raster(const SceneCommands& c) {
   if (c.identity || mode == Numeric::exact || mode == Numeric::filtered) {
     const std::uint64_t fragments = std::uint64_t(pipespec::draw(*rs, Numeric::f64).fragments);
     // A shadow pass per light: at most six views, each its triangles and its texels' fragments.
-    const std::uint64_t maps = c.shadows == "map" && mode != Numeric::f32 && mode != Numeric::f64
-                                   ? rs->scene->lights.size() * 6 * (pipespec::kWorkPerTriangle * rs->tris.size() + std::uint64_t(c.map_size * c.map_size))
-                                   : 0;
+    const bool rounded = mode == Numeric::f32 || mode == Numeric::f64;
+    std::uint64_t maps = c.shadows == "map" && !rounded
+                             ? rs->scene->lights.size() * 6 * (pipespec::kWorkPerTriangle * rs->tris.size() + std::uint64_t(c.map_size * c.map_size))
+                             : 0;
+    // Stencil volumes: per light the eye pass again, and the volumes' fragments (double's counts).
+    if (c.shadows == "volume" && !rounded) maps = rs->scene->lights.size() * (pipespec::kWorkPerTriangle * 3 * rs->tris.size() + 4 * fragments);
     const std::uint64_t work = pipespec::kWorkPerTriangle * rs->tris.size() + pipespec::kWorkPerFragment * fragments +
                                (c.identity ? pipespec::kWorkPerRay * std::uint64_t(rs->width * rs->height) : 0) + maps;
     if (work > c.max_work)
@@ -203,7 +220,7 @@ int raster(const SceneCommands& c) {
          << " window triangles, " << px.fragments << " fragments; " << seconds << " s (scene prepared in " << prepared << " s)\n"
          << "near plane at eye depth " << rs->camera.near.get_d() << " (half the nearest surface in view), far plane at infinity; "
          << pipespec::shading_name(c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong)
-         << " shading; shadows: " << (c.shadows == "map" ? "shadow maps" : "none") << "; not drawn: mirror and glass rays (a rasterizer lights locally)\n";
+         << " shading; shadows: " << (c.shadows == "map" ? "shadow maps" : c.shadows == "volume" ? "stencil volumes" : "none") << "; not drawn: mirror and glass rays (a rasterizer lights locally)\n";
   if (c.identity) {
     const auto t = clock::now();
     const pipespec::RasterTruth truth = pipespec::raster_truth(*rs, 0);
@@ -224,8 +241,11 @@ int raster(const SceneCommands& c) {
               "those, where the raster shows nothing (a crack)\n";
   }
   std::vector<std::uint32_t> blocked(px.objects.size(), 0);
-  if (c.shadows == "map") {
-    const shadowspec::SceneShadows sh = shadowspec::scene_shadows(rs, map_options(c), mode, c.all_effects);
+  if (c.shadows != "none") {
+    const shadowspec::ShadowMethod method = c.shadows == "map" ? shadowspec::ShadowMethod::map
+                                            : c.volume.value_or("zfail") == "zfail" ? shadowspec::ShadowMethod::volume_zfail
+                                                                                    : shadowspec::ShadowMethod::volume_zpass;
+    const shadowspec::SceneShadows sh = shadowspec::scene_shadows(rs, method, map_options(c), mode, c.all_effects);
     report_shadows(sh, c.map_size, report);
     blocked = sh.blocked;
   }

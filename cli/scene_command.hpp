@@ -33,6 +33,7 @@ struct SceneCommands {
   std::int64_t map_size = 512, map_pcf = 1;
   int map_bits = 24;
   std::string map_bias = "1/65536", map_slope = "2";
+  std::optional<std::string> volume;  // raster --shadows volume: zfail (default) or zpass
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

@@ -72,6 +72,23 @@ template <class Num> Mat4<Num> raster_matrix(const RasterCamera<Num>& c) {
   return product(infinite_projection_matrix(Num(c.window[0] * s), Num(c.window[1] * s), Num(c.window[2] * s), Num(c.window[3] * s), c.near), V);
 }
 
+// The camera's viewport: it puts sample (i, j), GL's pixel centre (i + 1/2, j + 1/2), at the
+// point (i, j), with depth in [0, 1].
+template <class Num> Viewport<Num> raster_viewport(const RasterCamera<Num>& c) {
+  const Num half = Num(1) / Num(2);
+  return {Num(-half), Num(-half), Num(c.width), Num(c.height), Num(0), Num(1)};
+}
+
+// A clipped polygon's corners divided and mapped to the window (its corners have w > 0).
+template <class Num> std::array<Vec3<Num>, kMaxClipCorners> window_corners(const Viewport<Num>& vp, const ClippedPolygon<Num>& K) {
+  std::array<Vec3<Num>, kMaxClipCorners> w;
+  for (int k = 0; k < K.k; ++k) {
+    const Vec4<Num>& q = K.v[k].c;
+    w[k] = to_window(vp, Vec3<Num>{Num(q.x / q.w), Num(q.y / q.w), Num(q.z / q.w)});
+  }
+  return w;
+}
+
 // offset: glPolygonOffset(factor, units) on every triangle; bits: the depth buffer's (0: depth in
 // Num). A shadow map's pass sets them; a picture draws with neither.
 template <class Num> struct DepthSettings {
@@ -90,9 +107,7 @@ RasterImage<Num> scene_raster(const RasterCamera<Num>& cam, const std::vector<Ra
     for (int i = 0; i < 16; ++i) m[i] = M[i / 4][i % 4];
     probe.step(L::project, StepKind::init).num("near", cam.near).list("M", std::span<const Num>(m));
   }
-  // The viewport puts sample (i, j), GL's pixel centre (i + 1/2, j + 1/2), at the point (i, j).
-  const Num half = Num(1) / Num(2);
-  const Viewport<Num> vp{Num(-half), Num(-half), Num(cam.width), Num(cam.height), Num(0), Num(1)};
+  const Viewport<Num> vp = raster_viewport(cam);
   RasterImage<Num> out;
   std::vector<DepthTriangle<Num>> window;
   for (const RasterTriangle<Num>& t : tris) {
@@ -116,11 +131,7 @@ RasterImage<Num> scene_raster(const RasterCamera<Num>& cam, const std::vector<Ra
       continue;
     }
     out.cut += cut;
-    std::array<Vec3<Num>, kMaxClipCorners> w;
-    for (int k = 0; k < K.k; ++k) {
-      const Vec4<Num>& q = K.v[k].c;
-      w[k] = to_window(vp, Vec3<Num>{Num(q.x / q.w), Num(q.y / q.w), Num(q.z / q.w)});
-    }
+    const std::array<Vec3<Num>, kMaxClipCorners> w = window_corners(vp, K);
     if constexpr (Probe::on) {
       std::array<Vec2<Num>, kMaxClipCorners> xy;
       for (int k = 0; k < K.k; ++k) xy[k] = {w[k].x, w[k].y};

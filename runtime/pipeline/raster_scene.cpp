@@ -301,24 +301,10 @@ std::shared_ptr<const RasterScene> raster_scene(std::shared_ptr<const tracer::Sc
 }
 
 RasterPixels draw(const RasterScene& s, Numeric n, bool* fell_back) {
-  auto in = [&]<class Num>(std::type_identity<Num>) {
+  return in_mode(n, "scene-raster", fell_back, [&]<class Num>(std::type_identity<Num>) {
     NoProbe none;
     return raster_pixels(s, pipe::scene_raster<Num>(camera_in<Num>(s.camera), triangles_in<Num>(s.tris), none));
-  };
-  if (fell_back) *fell_back = false;
-  switch (n) {
-    case Numeric::f32: return in(std::type_identity<float>{});
-    case Numeric::f64: return in(std::type_identity<double>{});
-    case Numeric::filtered:
-      try {
-        return in(std::type_identity<Interval>{});
-      } catch (const Uncertain&) {
-        if (fell_back) *fell_back = true;
-        return in(std::type_identity<Rational>{});
-      }
-    case Numeric::exact: return in(std::type_identity<Rational>{});
-    default: throw InputError("scene-raster runs on float, double, filtered and exact, not '" + std::string(numeric_name(n)) + "'");
-  }
+  });
 }
 
 }  // namespace sw::pipespec

@@ -8,7 +8,11 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
+#include "core/number.hpp"
+#include "input.hpp"
 #include "pipeline/scene_raster.hpp"
 #include "tracer/scene.hpp"
 
@@ -105,6 +109,26 @@ template <class Num> RasterPixels raster_pixels(const RasterScene& s, const pipe
       o.objects[to] = d[0], o.prims[to] = named_prim(s, d[0], d[1]);
     }
   return o;
+}
+
+// f(std::type_identity<Num>{}) in mode n: float, double, exact, or filtered (intervals, and exact
+// rationals when they cannot decide; fell_back then says so). what names the algorithm in the
+// error for another mode.
+template <class F> auto in_mode(Numeric n, std::string_view what, bool* fell_back, F&& f) {
+  if (fell_back) *fell_back = false;
+  switch (n) {
+    case Numeric::f32: return f(std::type_identity<float>{});
+    case Numeric::f64: return f(std::type_identity<double>{});
+    case Numeric::filtered:
+      try {
+        return f(std::type_identity<Interval>{});
+      } catch (const Uncertain&) {
+        if (fell_back) *fell_back = true;
+        return f(std::type_identity<Rational>{});
+      }
+    case Numeric::exact: return f(std::type_identity<Rational>{});
+    default: throw InputError(std::string(what) + " runs on float, double, filtered and exact, not '" + std::string(numeric_name(n)) + "'");
+  }
 }
 
 // The scene drawn untraced in mode n: float, double, exact, or filtered (intervals, and exact

@@ -5,7 +5,6 @@
 #include "pipeline/depth_plane.hpp"
 #include <thread>
 #include "tracer/history.hpp"
-#include "tracer/plan.hpp"
 #include "tracer/parallel.hpp"
 
 namespace sw::shadowspec {
@@ -114,31 +113,17 @@ std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> sce
 }
 
 MapPixels looked_up(const MapInput& in, Numeric n) {
-  auto in_num = [&]<class Num>(std::type_identity<Num>) {
+  return pipespec::in_mode(n, "shadow-map", nullptr, [&]<class Num>(std::type_identity<Num>) {
     std::vector<pipe::RasterCamera<Num>> views;
     for (const auto& v : in.views.views) views.push_back(pipespec::camera_in<Num>(v));
     const std::vector<shadow::MapPoint<Num>> points = map_points<Num>(in);
     const shadow::MapParams<Num> p = map_params<Num>(in.options);
     NoProbe none;
     return map_pixels(in, shadow::shadow_map(views, in.views.cube, to_num<Num>(in.views.position), pipespec::triangles_in<Num>(in.scene->tris), points, p, none));
-  };
-  switch (n) {
-    case Numeric::f32: return in_num(std::type_identity<float>{});
-    case Numeric::f64: return in_num(std::type_identity<double>{});
-    case Numeric::filtered:
-      try {
-        return in_num(std::type_identity<Interval>{});
-      } catch (const Uncertain&) {
-        return in_num(std::type_identity<Rational>{});
-      }
-    case Numeric::exact: return in_num(std::type_identity<Rational>{});
-    default: throw InputError("shadow-map runs on float, double, filtered and exact, not '" + std::string(numeric_name(n)) + "'");
-  }
+  });
 }
 
-MapInputRef parse_map_input(const Json& j) {
-  if (!j.is_object()) throw InputError("input: expected an object with a scene and a light");
-  only_keys_optional(j, {"scene"}, {"size", "stacks", "light", "map"}, "input");
+LightScene parse_light_scene(const Json& j) {
   std::string name;
   std::shared_ptr<const tracer::Scene> scene = tracer::scene_input(j["scene"], &name);
   pipespec::RasterOptions ro;
@@ -152,12 +137,19 @@ MapInputRef parse_map_input(const Json& j) {
   if (j.contains("stacks")) ro.stacks = static_cast<int>(parse_integer(j["stacks"], "input.stacks", pipespec::kMinStacks, pipespec::kMaxStacks));
   if (scene->lights.empty()) throw InputError("input.scene: the scene has no light to cast a shadow");
   const std::size_t light = j.contains("light") ? std::size_t(parse_integer(j["light"], "input.light", 0, std::int64_t(scene->lights.size()) - 1)) : 0;
-  const MapOptions o = parse_map_options(j.contains("map") ? j["map"] : Json(), "input.map", kMaxSpecMapSize);
   try {
-    return {map_input(pipespec::raster_scene(std::move(scene), ro), light, o)};
+    return {pipespec::raster_scene(std::move(scene), ro), light};
   } catch (const InputError& e) {
     throw InputError("input." + std::string(e.what()));
   }
+}
+
+MapInputRef parse_map_input(const Json& j) {
+  if (!j.is_object()) throw InputError("input: expected an object with a scene and a light");
+  only_keys_optional(j, {"scene"}, {"size", "stacks", "light", "map"}, "input");
+  LightScene ls = parse_light_scene(j);
+  const MapOptions o = parse_map_options(j.contains("map") ? j["map"] : Json(), "input.map", kMaxSpecMapSize);
+  return {map_input(std::move(ls.scene), ls.light, o)};
 }
 
 Json map_json(const MapPixels& p) {
@@ -241,28 +233,6 @@ std::vector<BenchSet<MapInputRef>> map_sets() {
         }
       }
   return {set};
-}
-
-SceneShadows scene_shadows(const std::shared_ptr<const RasterScene>& s, const MapOptions& o, Numeric n, bool all_effects) {
-  const tracer::Plan plan = all_effects ? tracer::all_effects_plan(*s->scene) : tracer::plan_scene(*s->scene);
-  const pipespec::RasterTruth truth = pipespec::raster_truth(*s, 0);
-  SceneShadows out{std::vector<std::uint32_t>(std::size_t(s->width * s->height), 0), {}};
-  for (std::size_t i = 0; i < s->scene->lights.size(); ++i) {
-    LightShadows l{i, plan.effects.shadows[i] != 0, {}, nullptr, {}};
-    if (!l.pass) {
-      const std::string name = "light " + std::to_string(i) + " ";
-      for (const tracer::Decision& d : plan.decisions)
-        if (d.effect == "shadows" && d.subject.rfind(name, 0) == 0) l.skipped = d.reason;
-      out.lights.push_back(std::move(l));
-      continue;
-    }
-    l.in = map_input(s, i, o, truth, 0);
-    l.map = looked_up(*l.in, n);
-    for (std::size_t k = 0; k < l.map.lit.size(); ++k)
-      if (l.map.lit[k] == 0) out.blocked[k] |= 1u << i;
-    out.lights.push_back(std::move(l));
-  }
-  return out;
 }
 
 }  // namespace sw::shadowspec

@@ -48,6 +48,13 @@ std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> sce
                                           const pipespec::RasterTruth& truth, unsigned threads = 1);
 
 MapInputRef parse_map_input(const Json& j);
+// The common keys of the family's inputs (scene, size, stacks, light), the other keys checked by
+// the caller: the rasterized scene and the light's index.
+struct LightScene {
+  std::shared_ptr<const RasterScene> scene;
+  std::size_t light = 0;
+};
+LightScene parse_light_scene(const Json& j);
 
 // Per pixel, row 0 at the top: the map's test at the point's own texel (-1: no surface, 0
 // shadowed, 1 lit), its PCF fraction (-1: none) and the exact visibility (-1, 0, 1). Over the
@@ -97,21 +104,6 @@ template <class Num> shadow::MapParams<Num> map_params(const MapOptions& o) {
 MapPixels looked_up(const MapInput& in, Numeric n);
 Json map_json(const MapPixels& p);
 
-// The rasterizer's shadows (`scene raster --shadows map`): per pixel, bit i set where light i's
-// map shadows the point the eye sees there; a map per light the plan keeps (every light with
-// all_effects), each drawn and looked up in mode n. Per light its outcome, or why it had no pass.
-struct LightShadows {
-  std::size_t light = 0;
-  bool pass = false;
-  std::string skipped;  // the planner's reason, without a pass
-  std::shared_ptr<const MapInput> in;
-  MapPixels map;
-};
-struct SceneShadows {
-  std::vector<std::uint32_t> blocked;
-  std::vector<LightShadows> lights;
-};
-SceneShadows scene_shadows(const std::shared_ptr<const RasterScene>& s, const MapOptions& o, Numeric n, bool all_effects);
 MapPixels oracle_pixels(const MapInput& in);
 std::size_t map_steps(const MapInput& in);
 std::vector<BenchSet<MapInputRef>> map_sets();

@@ -8,7 +8,7 @@
 #include "cli_harness.hpp"
 #include "data_root.hpp"
 #include "run.hpp"
-#include "shadows/shadow_map_input.hpp"
+#include "shadows/scene_shadows.hpp"
 
 using namespace sw;
 using namespace sw::shadowspec;

@@ -1,0 +1,179 @@
+#include "shadows/shadow_volume_input.hpp"
+#include <map>
+
+namespace sw::shadowspec {
+
+namespace {
+
+using V4 = pipe::Vec4<Rational>;
+
+// The sign of f(Num) exactly: in intervals, and in rationals where they cannot decide.
+template <class F> int filtered_sign(F&& f) {
+  try {
+    const Interval v = f(std::type_identity<Interval>{});
+    return v > Interval(0) ? 1 : v < Interval(0) ? -1 : 0;
+  } catch (const Uncertain&) {
+    return sgn(f(std::type_identity<Rational>{}));
+  }
+}
+template <class Num> pipe::Vec4<Num> v4_in(const V4& v) {
+  return {num::from_rational<Num>(v.x), num::from_rational<Num>(v.y), num::from_rational<Num>(v.z), num::from_rational<Num>(v.w)};
+}
+
+// A caster of the oracle: a triangle that is not edge-on to the light, and on a closed object one
+// that faces it.
+struct Caster {
+  V4 a, b, c;
+};
+
+// Whether the segment from X just before it on the eye's ray (X - e R, e > 0 infinitesimal) to the
+// light (the ray toward a directional one) crosses the open triangle: X's side of the triangle's
+// plane opposite the light's, and the line through X and L passing inside all three edges. Each
+// test is linear in X, so at a tie its sign is that of -R's.
+bool crosses(const Caster& t, const V4& L, const V4& X, const V4& R) {
+  auto side = [&](auto f) {
+    const int s = filtered_sign([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(X)); });
+    return s != 0 ? s : -filtered_sign([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(R)); });
+  };
+  const int light = filtered_sign([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(L), v4_in<Num>(t.a), v4_in<Num>(t.b), v4_in<Num>(t.c)); });
+  const int here = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(t.a), v4_in<Num>(t.b), v4_in<Num>(t.c)); });
+  if (here == 0 || here == light) return false;
+  int first = 0;
+  for (const auto& [p, q] : {std::pair{&t.a, &t.b}, std::pair{&t.b, &t.c}, std::pair{&t.c, &t.a}}) {
+    const int s = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(L), v4_in<Num>(*p), v4_in<Num>(*q)); });
+    if (s == 0 || (first != 0 && s != first)) return false;
+    first = s;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::shared_ptr<const VolumeInput> volume_input(std::shared_ptr<const MapInput> seen, bool zfail) {
+  auto in = std::make_shared<VolumeInput>();
+  const RasterScene& s = *seen->scene;
+  in->seen = std::move(seen), in->zfail = zfail;
+  std::map<std::array<Rational, 4>, std::int32_t> index;
+  for (const auto& t : s.tris) {
+    std::array<std::int32_t, 3> k{};
+    for (int c = 0; c < 3; ++c) {
+      const V4& x = t.x[std::size_t(c)];
+      const auto [it, fresh] = index.try_emplace({x.x, x.y, x.z, x.w}, std::int32_t(in->mesh.corners.size()));
+      if (fresh) in->mesh.corners.push_back(x);
+      k[std::size_t(c)] = it->second;
+    }
+    const tracer::ObjectKind kind = s.objects[std::size_t(t.object)].kind;
+    in->mesh.tris.push_back(k);
+    in->mesh.closed.push_back(kind == tracer::ObjectKind::sphere || kind == tracer::ObjectKind::box);
+  }
+  const lighting::Light<Rational>& li = s.scene->lights.at(in->seen->light);
+  in->light = {li.where.x, li.where.y, li.where.z, Rational(li.type == lighting::LightType::directional ? 0 : 1)};
+  return in;
+}
+
+VolumeInputRef parse_volume_input(const Json& j) {
+  if (!j.is_object()) throw InputError("input: expected an object with a scene and a light");
+  only_keys_optional(j, {"scene"}, {"size", "stacks", "light", "method"}, "input");
+  LightScene ls = parse_light_scene(j);
+  bool zfail = true;
+  if (j.contains("method")) {
+    const Json& m = j["method"];
+    if (!m.is_string() || (m != "zfail" && m != "zpass")) throw InputError("input.method: expected \"zfail\" or \"zpass\"");
+    zfail = m == "zfail";
+  }
+  MapOptions o;
+  o.size = 1;  // the views are shadow-map's; a volume needs only the seen points
+  return {volume_input(map_input(std::move(ls.scene), ls.light, o), zfail)};
+}
+
+VolumePixels volume_pixels(const VolumeInput& in, std::vector<std::int64_t> zpass_top, std::vector<std::int64_t> zfail_top) {
+  const MapInput& m = *in.seen;
+  const std::size_t n = std::size_t(m.scene->width * m.scene->height);
+  VolumePixels o{m.scene->width, m.scene->height, std::vector<int>(n, -1), std::vector<int>(n, -1), std::vector<std::int64_t>(n, 0), std::vector<std::int64_t>(n, 0)};
+  for (std::size_t k = 0; k < m.points.size(); ++k) {
+    const std::size_t px = m.points[k].pixel;
+    const bool reach = m.reaches[k], pass_lit = zpass_top[px] == 0, fail_lit = zfail_top[px] == 0;
+    o.zpass[px] = zpass_top[px], o.zfail[px] = zfail_top[px];
+    o.lit[px] = in.zfail ? fail_lit : pass_lit, o.visible[px] = reach;
+    if (!m.faces[k]) {
+      ++o.away;
+      continue;
+    }
+    o.wrong_pass += pass_lit != reach, o.wrong_fail += fail_lit != reach;
+  }
+  return o;
+}
+
+VolumePixels stenciled(const VolumeInput& in, Numeric n, bool* fell_back) {
+  const RasterScene& s = *in.seen->scene;
+  return pipespec::in_mode(n, "shadow-volume", fell_back, [&]<class Num>(std::type_identity<Num>) {
+    NoProbe none;
+    return stencil_pixels(in, shadow::shadow_volume(pipespec::camera_in<Num>(s.camera), pipespec::triangles_in<Num>(s.tris), mesh_in<Num>(in.mesh),
+                                                    v4_in<Num>(in.light), in.zfail, none));
+  });
+}
+
+VolumePixels volume_oracle(const VolumeInput& in) {
+  const MapInput& m = *in.seen;
+  const RasterScene& s = *m.scene;
+  std::vector<Caster> casters;
+  for (std::size_t t = 0; t < s.tris.size(); ++t) {
+    const auto& x = s.tris[t].x;
+    const int side = filtered_sign([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(in.light), v4_in<Num>(x[0]), v4_in<Num>(x[1]), v4_in<Num>(x[2])); });
+    if (side == 0 || (side < 0 && in.mesh.closed[t])) continue;
+    casters.push_back({x[0], x[1], x[2]});
+  }
+  auto holding = [&](const V4& X, const V4& R) {
+    std::int64_t n = 0;
+    for (const Caster& c : casters) n += crosses(c, in.light, X, R);
+    return n;
+  };
+  const std::size_t n = std::size_t(s.width * s.height);
+  std::vector<std::int64_t> zpass(n, 0), zfail(n, 0);
+  for (const SeenPoint& p : m.points) {
+    const ray::Ray3<Rational> r = pipespec::pixel_ray(s.camera, std::int64_t(p.pixel) % s.width, std::int64_t(p.pixel) / s.width);
+    const V4 R{r.d.x, r.d.y, r.d.z, Rational(0)};
+    const std::int64_t at_p = holding(V4{p.p.x, p.p.y, p.p.z, Rational(1)}, R);
+    zfail[p.pixel] = at_p;
+    zpass[p.pixel] = at_p - holding(V4{r.o.x, r.o.y, r.o.z, Rational(1)}, R);
+  }
+  VolumePixels o = volume_pixels(in, std::move(zpass), std::move(zfail));
+  o.casters = std::int64_t(casters.size());
+  return o;
+}
+
+// The silhouette, faces and fragments are the rasterizer's work, not the answer (the steps
+// edges, sides and done record them): the result holds what the oracle states.
+Json volume_json(const VolumePixels& p) {
+  return Json{{"width", p.width}, {"height", p.height}, {"lit", p.lit}, {"visible", p.visible}, {"zpass", p.zpass}, {"zfail", p.zfail},
+              {"wrong_pass", p.wrong_pass}, {"wrong_fail", p.wrong_fail}, {"away", p.away}, {"casters", p.casters}};
+}
+
+std::size_t volume_steps(const VolumeInput& in) {
+  const RasterScene& s = *in.seen->scene;
+  NoProbe none;
+  const auto img = pipe::scene_raster<double>(pipespec::camera_in<double>(s.camera), pipespec::triangles_in<double>(s.tris), none);
+  const auto vol = shadow::shadow_volume<double>(pipespec::camera_in<double>(s.camera), pipespec::triangles_in<double>(s.tris), mesh_in<double>(in.mesh),
+                                                 v4_in<double>(in.light), in.zfail, none);
+  const double tris = double(s.tris.size()), window = double(img.drawn.size() + s.tris.size()), pixels = double(s.width * s.height);
+  // The eye pass (scene-raster's count), two steps a triangle, a face's clip and fan, three a fragment.
+  const double steps = 8 + tris * 126 + 3 * window + 3 * (2 * double(img.buffer.fragments) + pixels) + 2 * tris + double(vol.faces) * 120 +
+                       2 * double(vol.fragments);
+  return static_cast<std::size_t>(steps);
+}
+
+std::vector<BenchSet<VolumeInputRef>> volume_sets() {
+  BenchSet<VolumeInputRef> set{"lights", {}};
+  // A spot, point lights and a directional light, by z-fail and by z-pass.
+  for (const char* scene : {"scenes/spot-lit.json", "scenes/glass-spheres.json", "scenes/cornell-box.json"})
+    for (int light = 0; light < 2; ++light)
+      for (const char* method : {"zfail", "zpass"}) {
+        try {
+          set.inputs.push_back(parse_volume_input(Json{{"scene", scene}, {"size", {32, 24}}, {"stacks", 4}, {"light", light}, {"method", method}}));
+        } catch (const InputError&) {  // the scene has one light only
+        }
+      }
+  return {set};
+}
+
+}  // namespace sw::shadowspec
