@@ -37,10 +37,11 @@ template <class Num> struct VolumeFace {
   bool flip = false;
 };
 
-// Per pixel (rows bottom up, GL's): the two counts, and the eye's depth buffer.
+// Per pixel (rows bottom up, GL's): the two counts, and the eye's depth buffer; the faces drawn.
 template <class Num> struct StencilImage {
   pipe::DepthBuffer<Num> eye;
   std::vector<std::int64_t> zpass, zfail;
+  std::vector<VolumeFace<Num>> faces_drawn;
   std::int64_t casters = 0, silhouette = 0, faces = 0, fragments = 0;
 };
 
@@ -197,6 +198,7 @@ StencilImage<Num> shadow_volume(const pipe::RasterCamera<Num>& cam, const std::v
     }
     probe.step(S::done, StepKind::done).idx("faces", out.faces).idx("fragments", out.fragments).idx("lit", lit);
   }
+  out.faces_drawn = std::move(faces);
   return out;
 }
 
