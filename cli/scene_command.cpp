@@ -60,8 +60,10 @@ void add_scene_commands(CLI::App& app, SceneCommands& c) {
   c.raster->add_option("--max-work", c.max_work, "Refuse exact or filtered work (and --identity) that implies more units (default " +
                                                      std::to_string(pipespec::kDefaultMaxWork) + "; docs/cli.md)")
       ->check(CLI::Validator(budget_count_error, "COUNT"));
-  c.raster->add_option("--shadows", c.shadows, "none (default), map or volume: a shadow map or stencil volumes per light whose shadows the planner cannot rule out")
-      ->check(CLI::IsMember({"none", "map", "volume"}));
+  c.raster->add_option("--shadows", c.shadows,
+                       "none (default), map, volume or projective: a shadow map, stencil volumes or planar shadows per light whose shadows the planner cannot rule out")
+      ->check(CLI::IsMember({"none", "map", "volume", "projective"}));
+  c.raster->add_option("--receiver", c.receiver, "With --shadows projective: the receiving object's index (default: the first plane or triangle)");
   c.raster->add_option("--volume", c.volume, "With --shadows volume: zfail (default; counts behind the surface, with caps) or zpass (in front; wrong with the eye in a volume)")
       ->check(CLI::IsMember({"zfail", "zpass"}));
   c.raster->add_option("--map-size", c.map_size, "A shadow map's texels a side, per view (default 512; 1..2048)");
@@ -150,6 +152,15 @@ void report_shadows(const shadowspec::SceneShadows& sh, std::int64_t map_size, s
       report << "no shadow pass (" << l.skipped << ")\n";
       continue;
     }
+    if (sh.method == shadowspec::ShadowMethod::projective) {
+      const shadowspec::ProjectivePixels& p = l.projective;
+      std::int64_t shadowed = 0;
+      for (int v : p.shadowed) shadowed += v == 1;
+      report << "projective onto object " << l.projective_in->receiver << " (GL_LESS, glPolygonOffset(-1, -1), stencil): " << p.occluders << " occluder triangles, "
+             << p.fragments << " fragments, " << p.ties << " depth ties; " << shadowed << " pixels darkened; on the receiver's points facing the light: missing "
+             << p.missing << ", spurious " << p.spurious << " (the receiver takes no shadow of itself, and nothing else does)\n";
+      continue;
+    }
     if (sh.method != shadowspec::ShadowMethod::map) {
       const shadowspec::VolumePixels& v = l.volume;
       const bool zfail = sh.method == shadowspec::ShadowMethod::volume_zfail;
@@ -176,6 +187,7 @@ void report_shadows(const shadowspec::SceneShadows& sh, std::int64_t map_size, s
 // exact ray cast, timed. Everything is drawn and judged before a file is written.
 int raster(const SceneCommands& c) {
   if (c.volume && c.shadows != "volume") throw InputError("--volume: only with --shadows volume (got --shadows " + c.shadows + ")");
+  if (c.receiver && c.shadows != "projective") throw InputError("--receiver: only with --shadows projective (got --shadows " + c.shadows + ")");
   pipespec::RasterOptions o;
   parse_size(c.size, o.width, o.height);
   o.stacks = c.stacks;
@@ -186,6 +198,12 @@ int raster(const SceneCommands& c) {
   const auto t0 = clock::now();
   const std::shared_ptr<const pipespec::RasterScene> rs = pipespec::raster_scene(std::move(scene), o);
   const double prepared = std::chrono::duration<double>(clock::now() - t0).count();
+  if (c.shadows == "projective")  // the receiver checked for every light before any work
+    for (std::size_t i = 0; i < rs->scene->lights.size(); ++i) try {
+        (void)shadowspec::receiver_plane(*rs, i, c.receiver.value_or(-1));
+      } catch (const InputError& e) {
+        throw InputError("--" + std::string(e.what()) + " (light " + std::to_string(i) + ")");
+      }
   const Numeric mode = parse_numeric(c.numeric).value();  // checked by the option
   auto timed = [&](Numeric n, bool* fb) {
     const auto t = clock::now();
@@ -220,7 +238,7 @@ int raster(const SceneCommands& c) {
          << " window triangles, " << px.fragments << " fragments; " << seconds << " s (scene prepared in " << prepared << " s)\n"
          << "near plane at eye depth " << rs->camera.near.get_d() << " (half the nearest surface in view), far plane at infinity; "
          << pipespec::shading_name(c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong)
-         << " shading; shadows: " << (c.shadows == "map" ? "shadow maps" : c.shadows == "volume" ? "stencil volumes" : "none") << "; not drawn: mirror and glass rays (a rasterizer lights locally)\n";
+         << " shading; shadows: " << (c.shadows == "map" ? "shadow maps" : c.shadows == "volume" ? "stencil volumes" : c.shadows == "projective" ? "projective (planar)" : "none") << "; not drawn: mirror and glass rays (a rasterizer lights locally)\n";
   if (c.identity) {
     const auto t = clock::now();
     const pipespec::RasterTruth truth = pipespec::raster_truth(*rs, 0);
@@ -242,10 +260,11 @@ int raster(const SceneCommands& c) {
   }
   std::vector<std::uint32_t> blocked(px.objects.size(), 0);
   if (c.shadows != "none") {
-    const shadowspec::ShadowMethod method = c.shadows == "map" ? shadowspec::ShadowMethod::map
+    const shadowspec::ShadowMethod method = c.shadows == "map"          ? shadowspec::ShadowMethod::map
+                                            : c.shadows == "projective" ? shadowspec::ShadowMethod::projective
                                             : c.volume.value_or("zfail") == "zfail" ? shadowspec::ShadowMethod::volume_zfail
                                                                                     : shadowspec::ShadowMethod::volume_zpass;
-    const shadowspec::SceneShadows sh = shadowspec::scene_shadows(rs, method, map_options(c), mode, c.all_effects);
+    const shadowspec::SceneShadows sh = shadowspec::scene_shadows(rs, method, map_options(c), mode, c.all_effects, c.receiver.value_or(-1));
     report_shadows(sh, c.map_size, report);
     blocked = sh.blocked;
   }

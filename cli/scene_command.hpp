@@ -34,6 +34,7 @@ struct SceneCommands {
   int map_bits = 24;
   std::string map_bias = "1/65536", map_slope = "2";
   std::optional<std::string> volume;  // raster --shadows volume: zfail (default) or zpass
+  std::optional<std::int64_t> receiver;  // raster --shadows projective: the receiving object
 };
 
 void add_scene_commands(CLI::App& app, SceneCommands& c);

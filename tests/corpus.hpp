@@ -10,8 +10,8 @@
 namespace sw::testing {
 
 // The inputs of a family's corpus files (tests/cases/<family>/*.jsonl, "input" members; files
-// named bad* hold inputs that must be refused and are left out).
-inline std::vector<Json> corpus(std::string_view family) {
+// named bad* hold inputs that must be refused and are left out); with an algorithm, only its lines.
+inline std::vector<Json> corpus(std::string_view family, std::string_view algorithm = {}) {
   std::vector<Json> out;
   const auto dir = std::filesystem::path(SW_SOURCE_DIR) / "tests" / "cases" / std::string(family);
   if (!std::filesystem::exists(dir)) return out;
@@ -20,7 +20,10 @@ inline std::vector<Json> corpus(std::string_view family) {
     std::ifstream in(f.path());
     std::string line;
     while (std::getline(in, line))
-      if (!line.empty() && line[0] == '{') out.push_back(Json::parse(line).at("input"));
+      if (!line.empty() && line[0] == '{') {
+        const Json j = Json::parse(line);
+        if (algorithm.empty() || j.value("algorithm", "") == algorithm) out.push_back(j.at("input"));
+      }
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // Coverage is the fill family's (triangle-edge and its tie rule); GL interpolates window depth
 // (z/w) linearly in x and y, so depth at a sample is the plane through the vertices' (x, y, z).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <vector>
 #include "core/vec.hpp"
@@ -27,6 +28,11 @@ template <class Num> DepthPlane<Num> depth_plane(const std::array<Vec3<Num>, 3>&
   p.zx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / p.area2;
   p.zy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / p.area2;
   return p;
+}
+
+// glPolygonOffset's o = factor max(|zx|, |zy|) + units r for a plane (r: the depth's resolvable step).
+template <class Num> Num polygon_offset(const DepthPlane<Num>& p, const Num& factor, const Num& units, const Num& r) {
+  return Num(factor * std::max(num::abs(p.zx), num::abs(p.zy)) + units * r);
 }
 
 // The samples triangle-edge covers in a width x height window, in its order (rows bottom up),

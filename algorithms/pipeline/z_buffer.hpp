@@ -68,7 +68,7 @@ DepthBuffer<Num> z_buffer(std::int64_t width, std::int64_t height, const std::ve
       const std::array<Vec2<Num>, 3> corners{Vec2<Num>{a.x, a.y}, Vec2<Num>{b.x, b.y}, Vec2<Num>{c.x, c.y}};
       probe.step(L::plane, StepKind::init).idx("t", t.id).num("area2", plane.area2).num("zx", zx).num("zy", zy).geo_list(GeoKind::polygon, std::span(corners)).keep();
     }
-    const Num o = Num(t.factor * std::max(num::abs(zx), num::abs(zy)) + t.units * r);
+    const Num o = polygon_offset(plane, t.factor, t.units, r);
     if constexpr (Probe::on) probe.step(L::offset, StepKind::advance).num("o", o);
     covered_samples(t.v, width, height, samples);
     if constexpr (Probe::on) probe.step(L::cover, StepKind::advance).idx("samples", std::int64_t(samples.size()));

@@ -6,11 +6,12 @@
 #include <memory>
 #include <string>
 #include <vector>
+#include "shadows/projective_shadow_input.hpp"
 #include "shadows/shadow_volume_input.hpp"
 
 namespace sw::shadowspec {
 
-enum class ShadowMethod : std::uint8_t { map, volume_zfail, volume_zpass };
+enum class ShadowMethod : std::uint8_t { map, volume_zfail, volume_zpass, projective };
 
 struct LightShadows {
   std::size_t light = 0;
@@ -20,13 +21,18 @@ struct LightShadows {
   MapPixels map;                            // ShadowMethod::map
   std::shared_ptr<const VolumeInput> volume_in;
   VolumePixels volume;                      // the volume methods
+  std::shared_ptr<const ProjectiveInput> projective_in;
+  ProjectivePixels projective;              // ShadowMethod::projective
 };
 struct SceneShadows {
   ShadowMethod method = ShadowMethod::map;
   std::vector<std::uint32_t> blocked;
   std::vector<LightShadows> lights;
 };
-SceneShadows scene_shadows(const std::shared_ptr<const RasterScene>& s, ShadowMethod method, const MapOptions& o, Numeric n, bool all_effects);
+// receiver: projective's receiving object (-1: the first plane or triangle); drawn with GL_LESS,
+// glPolygonOffset(-1, -1) and the stencil.
+SceneShadows scene_shadows(const std::shared_ptr<const RasterScene>& s, ShadowMethod method, const MapOptions& o, Numeric n, bool all_effects,
+                           std::int64_t receiver = -1);
 inline SceneShadows scene_shadows(const std::shared_ptr<const RasterScene>& s, const MapOptions& o, Numeric n, bool all_effects) {
   return scene_shadows(s, ShadowMethod::map, o, n, all_effects);
 }

@@ -20,33 +20,6 @@ Rational bounded(const Json& v, const std::string& what, const Rational& lo, con
   return x;
 }
 
-// The window depth GL's answer has at a texel of view c: 1 - n/e in perspective (e = n + t d),
-// t/(f - n) in orthographic, from where the texel's ray meets it.
-Rational depth_of(const pipe::RasterCamera<Rational>& c, const Rational& t) {
-  if (c.orthographic) return t / (c.far - c.near);
-  return 1 - c.near / (c.near + t * c.dist);
-}
-
-// The slope of the plane through Y along e1, e2 in view c's window: max(|dz/dx|, |dz/dy|) from Y
-// and two points a little along e1 and e2, each in front of the eye.
-Rational slope_of(const pipe::Mat4<Rational>& M, const pipe::RasterCamera<Rational>& c, const V3& Y, const V3& e1, const V3& e2) {
-  auto window = [&](const V3& p) {
-    const pipe::Vec4<Rational> q = pipe::apply(M, pipe::Vec4<Rational>{p.x, p.y, p.z, Rational(1)});
-    return Vec3<Rational>{Rational(-1, 2) + (q.x / q.w + 1) * c.width / 2, Rational(-1, 2) + (q.y / q.w + 1) * c.height / 2, (q.z / q.w + 1) / 2};
-  };
-  const pipe::Vec4<Rational> wy = pipe::apply(M, pipe::Vec4<Rational>{Y.x, Y.y, Y.z, Rational(1)});
-  const pipe::Vec4<Rational> w1 = pipe::apply(M, pipe::Vec4<Rational>{e1.x, e1.y, e1.z, Rational(0)}), w2 = pipe::apply(M, pipe::Vec4<Rational>{e2.x, e2.y, e2.z, Rational(0)});
-  const Rational eps = wy.w / (2 * (num::abs(w1.w) + num::abs(w2.w) + 1));
-  // Any three points of the plane give its slopes; the area of their triangle on the screen is 0
-  // only for a plane seen edge-on, which has no slope (and covers no texel).
-  const std::array<Vec3<Rational>, 3> w{window(Y), window(V3(Y + V3(eps * e1))), window(V3(Y + V3(eps * e2)))};
-  const Rational area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[1].y - w[0].y) * (w[2].x - w[0].x);
-  if (area2 == 0) return 0;
-  const Rational zx = ((w[1].z - w[0].z) * (w[2].y - w[0].y) - (w[2].z - w[0].z) * (w[1].y - w[0].y)) / area2;
-  const Rational zy = ((w[2].z - w[0].z) * (w[1].x - w[0].x) - (w[1].z - w[0].z) * (w[2].x - w[0].x)) / area2;
-  return std::max(num::abs(zx), num::abs(zy));
-}
-
 // Two directions along a raster triangle's plane: from its first corner to the others (a corner at
 // infinity is itself a direction).
 std::array<V3, 2> along_of(const pipe::RasterTriangle<Rational>& t) {
@@ -179,7 +152,7 @@ MapPixels oracle_pixels(const MapInput& in) {
       for (std::int64_t i = 0; i < cam.width; ++i) {
         const pipespec::PixelTruth& p = t.px[std::size_t(jt * cam.width + i)];
         if (p.object < 0) continue;
-        Rational z = std::clamp(depth_of(cam, p.t), Rational(0), Rational(1));
+        Rational z = std::clamp(window_depth(cam, p.t), Rational(0), Rational(1));
         if (o.bits) z = Rational(num::floor_int(Rational(z * M_scale + Rational(1, 2)))) / M_scale;
         m.D[std::size_t((cam.height - 1 - jt) * cam.width + i)] = z;
       }
@@ -193,7 +166,7 @@ MapPixels oracle_pixels(const MapInput& in) {
     const pipe::Vec4<Rational> c = pipe::apply(m.M, pipe::Vec4<Rational>{P.x, P.y, P.z, Rational(1)});
     if (c.w <= 0) continue;
     const Rational x = Rational(-1, 2) + (c.x / c.w + 1) * m.cam.width / 2, y = Rational(-1, 2) + (c.y / c.w + 1) * m.cam.height / 2;
-    const Rational slope = o.slope == 0 ? Rational(0) : slope_of(m.M, m.cam, P, in.along[k][0], in.along[k][1]);
+    const Rational slope = o.slope == 0 ? Rational(0) : window_slope(m.M, m.cam, P, in.along[k][0], in.along[k][1]);
     const Rational ref = (c.z / c.w + 1) / 2 - o.bias - o.slope * slope;
     const std::int64_t i = num::floor_int(Rational(x + Rational(1, 2))), j = num::floor_int(Rational(y + Rational(1, 2)));
     if (i < 0 || j < 0 || i >= m.cam.width || j >= m.cam.height) continue;

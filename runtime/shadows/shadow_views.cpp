@@ -1,4 +1,5 @@
 #include "shadows/shadow_views.hpp"
+#include "shadows/shadow_volume.hpp"
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -124,6 +125,64 @@ bool reaches(const RasterScene& s, std::size_t light, const SeenPoint& p) {
   } catch (const Uncertain&) {
     return !tracer::scene_hit(s.traced, ray::Ray3<Rational>{p.p, d}, true, t_max, leaving, none).hit;
   }
+}
+
+// The window depth GL's answer has at a texel of view c: 1 - n/e in perspective (e = n + t d),
+// t/(f - n) in orthographic, from where the texel's ray meets it.
+Rational window_depth(const pipe::RasterCamera<Rational>& c, const Rational& t) {
+  if (c.orthographic) return t / (c.far - c.near);
+  return 1 - c.near / (c.near + t * c.dist);
+}
+
+// The slope of the plane through Y along e1, e2 in view c's window: max(|dz/dx|, |dz/dy|) from Y
+// and two points a little along e1 and e2, each in front of the eye.
+Rational window_slope(const pipe::Mat4<Rational>& M, const pipe::RasterCamera<Rational>& c, const Vec3<Rational>& Y, const Vec3<Rational>& e1, const Vec3<Rational>& e2) {
+  auto window = [&](const Vec3<Rational>& p) {
+    const pipe::Vec4<Rational> q = pipe::apply(M, pipe::Vec4<Rational>{p.x, p.y, p.z, Rational(1)});
+    return Vec3<Rational>{Rational(-1, 2) + (q.x / q.w + 1) * c.width / 2, Rational(-1, 2) + (q.y / q.w + 1) * c.height / 2, (q.z / q.w + 1) / 2};
+  };
+  const pipe::Vec4<Rational> wy = pipe::apply(M, pipe::Vec4<Rational>{Y.x, Y.y, Y.z, Rational(1)});
+  const pipe::Vec4<Rational> w1 = pipe::apply(M, pipe::Vec4<Rational>{e1.x, e1.y, e1.z, Rational(0)}), w2 = pipe::apply(M, pipe::Vec4<Rational>{e2.x, e2.y, e2.z, Rational(0)});
+  const Rational eps = wy.w / (2 * (num::abs(w1.w) + num::abs(w2.w) + 1));
+  // Any three points of the plane give its slopes; the area of their triangle on the screen is 0
+  // only for a plane seen edge-on, which has no slope (and covers no texel).
+  const std::array<Vec3<Rational>, 3> w{window(Y), window(Vec3<Rational>(Y + Vec3<Rational>(eps * e1))), window(Vec3<Rational>(Y + Vec3<Rational>(eps * e2)))};
+  const Rational area2 = (w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[1].y - w[0].y) * (w[2].x - w[0].x);
+  if (area2 == 0) return 0;
+  const Rational zx = ((w[1].z - w[0].z) * (w[2].y - w[0].y) - (w[2].z - w[0].z) * (w[1].y - w[0].y)) / area2;
+  const Rational zy = ((w[2].z - w[0].z) * (w[1].x - w[0].x) - (w[1].z - w[0].z) * (w[2].x - w[0].x)) / area2;
+  return std::max(num::abs(zx), num::abs(zy));
+}
+
+bool segment_crosses(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X, const pipe::Vec4<Rational>& R) {
+  auto side = [&](auto f) {
+    const int s = exact_sign_of([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(X)); });
+    return s != 0 ? s : -exact_sign_of([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(R)); });
+  };
+  const int light = exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(L), v4_in<Num>(t[0]), v4_in<Num>(t[1]), v4_in<Num>(t[2])); });
+  const int here = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(t[0]), v4_in<Num>(t[1]), v4_in<Num>(t[2])); });
+  if (here == 0 || here == light) return false;
+  int first = 0;
+  for (const auto& [p, q] : {std::pair{&t[0], &t[1]}, std::pair{&t[1], &t[2]}, std::pair{&t[2], &t[0]}}) {
+    const int s = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(L), v4_in<Num>(*p), v4_in<Num>(*q)); });
+    if (s == 0 || (first != 0 && s != first)) return false;
+    first = s;
+  }
+  return true;
+}
+
+Meeting segment_meets(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X) {
+  auto sign = [&](const pipe::Vec4<Rational>& a, const pipe::Vec4<Rational>& b, const pipe::Vec4<Rational>& c, const pipe::Vec4<Rational>& d) {
+    return exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(a), v4_in<Num>(b), v4_in<Num>(c), v4_in<Num>(d)); });
+  };
+  const int light = sign(L, t[0], t[1], t[2]);
+  if (light == 0) return {};
+  const int here = sign(X, t[0], t[1], t[2]);
+  if (here == light) return {};
+  const std::array<int, 3> e{sign(X, L, t[0], t[1]), sign(X, L, t[1], t[2]), sign(X, L, t[2], t[0])};
+  const bool all_pos = e[0] > 0 && e[1] > 0 && e[2] > 0, all_neg = e[0] < 0 && e[1] < 0 && e[2] < 0;
+  const bool no_neg = e[0] >= 0 && e[1] >= 0 && e[2] >= 0, no_pos = e[0] <= 0 && e[1] <= 0 && e[2] <= 0;
+  return {here != 0 && (all_pos || all_neg), no_neg || no_pos};
 }
 
 }  // namespace sw::shadowspec

@@ -3,7 +3,9 @@
 // from it to the light (a ray, toward a directional light) meets nothing. Rules:
 // docs/shadows/semantics.md.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 #include "pipeline/raster_truth.hpp"
 
@@ -40,5 +42,40 @@ std::vector<SeenPoint> seen_points(const RasterScene& s, const pipespec::RasterT
 // directional one) but p's own flat surface, which the segment leaves; intervals first, exact
 // rationals where they cannot decide.
 bool reaches(const RasterScene& s, std::size_t light, const SeenPoint& p);
+
+// The sign of f(std::type_identity<Num>) exactly: in intervals, and in rationals where they cannot decide.
+template <class F> int exact_sign_of(F&& f) {
+  try {
+    const Interval v = f(std::type_identity<Interval>{});
+    return v > Interval(0) ? 1 : v < Interval(0) ? -1 : 0;
+  } catch (const Uncertain&) {
+    return sgn(f(std::type_identity<Rational>{}));
+  }
+}
+template <class Num> pipe::Vec4<Num> v4_in(const pipe::Vec4<Rational>& v) {
+  return {num::from_rational<Num>(v.x), num::from_rational<Num>(v.y), num::from_rational<Num>(v.z), num::from_rational<Num>(v.w)};
+}
+
+// The window depth GL gives the point at t along view c's pixel ray (pixel_ray: from the near
+// plane): 1 - n/e in perspective (e = n + t d), t/(f - n) in orthographic.
+Rational window_depth(const pipe::RasterCamera<Rational>& c, const Rational& t);
+// max(|dz/dx|, |dz/dy|) of the plane through Y along e1, e2 in the window of view c (matrix M),
+// glPolygonOffset's slope; 0 for a plane seen edge-on.
+Rational window_slope(const pipe::Mat4<Rational>& M, const pipe::RasterCamera<Rational>& c, const Vec3<Rational>& Y, const Vec3<Rational>& e1,
+                      const Vec3<Rational>& e2);
+
+// Whether the segment from X just before it on a ray of direction R (X - e R, e > 0
+// infinitesimal) to the light L (the ray toward a directional one, w = 0) crosses the open
+// triangle (a, b, c): X on the far side of its plane from L, and the line through X and L inside
+// all three edges; each sign exact (intervals, then rationals), at a tie that of -R.
+bool segment_crosses(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X, const pipe::Vec4<Rational>& R);
+
+// Whether the segment from X to the light L meets the triangle t: inside, through its relative
+// interior with X off its plane; touching, its closed triangle at all (X may lie on it). A triangle
+// edge-on from the light meets nothing. Exact signs (intervals, then rationals).
+struct Meeting {
+  bool inside = false, touching = false;
+};
+Meeting segment_meets(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X);
 
 }  // namespace sw::shadowspec

@@ -3,51 +3,7 @@
 
 namespace sw::shadowspec {
 
-namespace {
-
 using V4 = pipe::Vec4<Rational>;
-
-// The sign of f(Num) exactly: in intervals, and in rationals where they cannot decide.
-template <class F> int filtered_sign(F&& f) {
-  try {
-    const Interval v = f(std::type_identity<Interval>{});
-    return v > Interval(0) ? 1 : v < Interval(0) ? -1 : 0;
-  } catch (const Uncertain&) {
-    return sgn(f(std::type_identity<Rational>{}));
-  }
-}
-template <class Num> pipe::Vec4<Num> v4_in(const V4& v) {
-  return {num::from_rational<Num>(v.x), num::from_rational<Num>(v.y), num::from_rational<Num>(v.z), num::from_rational<Num>(v.w)};
-}
-
-// A caster of the oracle: a triangle that is not edge-on to the light, and on a closed object one
-// that faces it.
-struct Caster {
-  V4 a, b, c;
-};
-
-// Whether the segment from X just before it on the eye's ray (X - e R, e > 0 infinitesimal) to the
-// light (the ray toward a directional one) crosses the open triangle: X's side of the triangle's
-// plane opposite the light's, and the line through X and L passing inside all three edges. Each
-// test is linear in X, so at a tie its sign is that of -R's.
-bool crosses(const Caster& t, const V4& L, const V4& X, const V4& R) {
-  auto side = [&](auto f) {
-    const int s = filtered_sign([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(X)); });
-    return s != 0 ? s : -filtered_sign([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(R)); });
-  };
-  const int light = filtered_sign([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(L), v4_in<Num>(t.a), v4_in<Num>(t.b), v4_in<Num>(t.c)); });
-  const int here = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(t.a), v4_in<Num>(t.b), v4_in<Num>(t.c)); });
-  if (here == 0 || here == light) return false;
-  int first = 0;
-  for (const auto& [p, q] : {std::pair{&t.a, &t.b}, std::pair{&t.b, &t.c}, std::pair{&t.c, &t.a}}) {
-    const int s = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(L), v4_in<Num>(*p), v4_in<Num>(*q)); });
-    if (s == 0 || (first != 0 && s != first)) return false;
-    first = s;
-  }
-  return true;
-}
-
-}  // namespace
 
 std::shared_ptr<const VolumeInput> volume_input(std::shared_ptr<const MapInput> seen, bool zfail) {
   auto in = std::make_shared<VolumeInput>();
@@ -116,16 +72,16 @@ VolumePixels stenciled(const VolumeInput& in, Numeric n, bool* fell_back) {
 VolumePixels volume_oracle(const VolumeInput& in) {
   const MapInput& m = *in.seen;
   const RasterScene& s = *m.scene;
-  std::vector<Caster> casters;
+  std::vector<std::array<V4, 3>> casters;
   for (std::size_t t = 0; t < s.tris.size(); ++t) {
     const auto& x = s.tris[t].x;
-    const int side = filtered_sign([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(in.light), v4_in<Num>(x[0]), v4_in<Num>(x[1]), v4_in<Num>(x[2])); });
+    const int side = exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(in.light), v4_in<Num>(x[0]), v4_in<Num>(x[1]), v4_in<Num>(x[2])); });
     if (side == 0 || (side < 0 && in.mesh.closed[t])) continue;
     casters.push_back({x[0], x[1], x[2]});
   }
   auto holding = [&](const V4& X, const V4& R) {
     std::int64_t n = 0;
-    for (const Caster& c : casters) n += crosses(c, in.light, X, R);
+    for (const auto& c : casters) n += segment_crosses(c, in.light, X, R);
     return n;
   };
   const std::size_t n = std::size_t(s.width * s.height);

@@ -55,8 +55,7 @@ int face_of(const V3& d) {  // largest axis, ties x then y; +x, -x, +y, -y, +z, 
 
 TEST_CASE("shadow-map: every exact step against a standalone pass and closed forms", "[shadows][map][steps]") {
   std::vector<Json> inputs{Json::parse(R"({"scene":"scenes/spot-lit.json","size":[20,15],"stacks":3,"light":0,"map":{"size":24,"slope":2,"bias":"1/4096","pcf":3}})")};
-  for (const Json& j : corpus("shadows"))
-    if (!j.contains("method")) inputs.push_back(j);  // not a volume's
+  for (const Json& j : corpus("shadows", "shadow-map")) inputs.push_back(j);
   std::size_t lookups = 0, offmap = 0, cube = 0, ortho = 0, shadowed = 0;
   for (const Json& j : inputs) {
     INFO(j.dump().substr(0, 240));

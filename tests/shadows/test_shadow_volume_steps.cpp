@@ -41,8 +41,7 @@ TEST_CASE("shadow-volume: every exact step against standalone passes and closed 
                               "materials":{"m":{"diffuse":[0.8,0.8,0.8]}},"lights":[{"type":"point","position":[1,-2,0]}],
                               "objects":[{"type":"plane","point":[0,0,0],"normal":[0,1,0],"material":"m"},
                                          {"type":"triangle","vertices":[[-1,1,0],[1,1,0],[0,2,1]],"material":"m"}]},"size":[12,9]})")};
-  for (const Json& j : corpus("shadows"))
-    if (j.contains("method")) inputs.push_back(j);
+  for (const Json& j : corpus("shadows", "shadow-volume")) inputs.push_back(j);
   std::size_t fragments = 0, flipped = 0, pixels = 0;
   for (const Json& j : inputs) {
     INFO(j.dump().substr(0, 240));
