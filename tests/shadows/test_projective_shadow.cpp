@@ -205,3 +205,28 @@ TEST_CASE("projective-shadow: every exact step against a standalone eye pass and
     CHECK(img.fragments == fragments);
   }
 }
+
+#include <filesystem>
+#include "cli_harness.hpp"
+#include "data_root.hpp"
+
+TEST_CASE("scene raster --shadows projective: a line per light, and a bad receiver leaves no file", "[shadows][projective][cli]") {
+  const auto dir = testing::scratch("scene-raster-projective");
+  const std::string png = (dir / "r.png").string();
+  const std::string scene = testing::sh_quote((data_root() / "scenes" / "spot-lit.json").string());
+  const testing::Ran r = testing::run_stepwise("scene raster " + scene + " --size 40x30 --stacks 4 --shadows projective --out " + testing::sh_quote(png));
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("light 0: projective onto object 0 (GL_LESS, glPolygonOffset(-1, -1), stencil)") != std::string::npos);
+  CHECK(r.out.find("missing 0, spurious 0") != std::string::npos);
+  CHECK(std::filesystem::exists(png));
+  for (const std::string bad : {" --shadows projective --receiver 1", " --shadows projective --receiver 99", " --shadows map --receiver 0"}) {
+    std::filesystem::remove(png);
+    const testing::Ran b = testing::run_stepwise("scene raster " + scene + " --size 16x16" + bad + " --out " + testing::sh_quote(png));
+    INFO(bad << ": " << b.err);
+    CHECK(b.status == 2);
+    CHECK(std::count(b.err.begin(), b.err.end(), '\n') == 1);
+    CHECK(b.err.find("--receiver") != std::string::npos);
+    CHECK(!std::filesystem::exists(png));
+  }
+}
