@@ -204,7 +204,7 @@ std::vector<BenchSet<ProjectiveInputRef>> projective_sets() {
   // The floor under spots and a point light: the depth tie lost (GL_LESS), kept (GL_LEQUAL), offset.
   for (const char* scene : {"scenes/spot-lit.json", "scenes/glass-spheres.json", "scenes/eye-in-shadow.json"})
     for (const Json& test : {Json{{"depth", "less"}}, Json{{"depth", "lequal"}}, Json{{"depth", "less"}, {"offset", {-1, -1}}}}) {
-      Json j{{"scene", scene}, {"size", {32, 24}}, {"stacks", 4}};
+      Json j{{"scene", scene}, {"size", {24, 18}}, {"stacks", 4}};
       j.update(test);
       set.inputs.push_back(parse_projective_input(j));
     }

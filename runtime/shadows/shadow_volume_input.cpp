@@ -125,7 +125,7 @@ std::vector<BenchSet<VolumeInputRef>> volume_sets() {
     for (int light = 0; light < 2; ++light)
       for (const char* method : {"zfail", "zpass"}) {
         try {
-          set.inputs.push_back(parse_volume_input(Json{{"scene", scene}, {"size", {32, 24}}, {"stacks", 4}, {"light", light}, {"method", method}}));
+          set.inputs.push_back(parse_volume_input(Json{{"scene", scene}, {"size", {24, 18}}, {"stacks", 4}, {"light", light}, {"method", method}}));
         } catch (const InputError&) {  // the scene has one light only
         }
       }
