@@ -163,8 +163,9 @@ bool segment_crosses(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::V
   const int here = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(t[0]), v4_in<Num>(t[1]), v4_in<Num>(t[2])); });
   if (here == 0 || here == light) return false;
   int first = 0;
-  for (const auto& [p, q] : {std::pair{&t[0], &t[1]}, std::pair{&t[1], &t[2]}, std::pair{&t[2], &t[0]}}) {
-    const int s = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(L), v4_in<Num>(*p), v4_in<Num>(*q)); });
+  for (int k = 0; k < 3; ++k) {  // clang 14 captures no structured binding in a lambda
+    const pipe::Vec4<Rational>&p = t[std::size_t(k)], &q = t[std::size_t((k + 1) % 3)];
+    const int s = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(L), v4_in<Num>(p), v4_in<Num>(q)); });
     if (s == 0 || (first != 0 && s != first)) return false;
     first = s;
   }

@@ -4,6 +4,7 @@
 // triangles behind and around the eye, planes to the horizon); the clipper against a brute-force
 // intersection of half-planes; and the tessellation rule.
 #include <catch2/catch.hpp>
+#include "refusals.hpp"
 #include <filesystem>
 #include <map>
 #include <random>
@@ -216,17 +217,7 @@ TEST_CASE("scene-raster: a sphere's tessellation is the documented closed mesh o
 
 TEST_CASE("scene-raster: bad input is one line naming the problem", "[pipeline][raster][input]") {
   const Algorithm& alg = find_algorithm("scene-raster");
-  auto refused = [&](const std::string& text, const std::string& needle) {
-    INFO(text);
-    try {
-      (void)alg.open(Json::parse(text), Numeric::exact);
-      FAIL("accepted");
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      CHECK(what.find('\n') == std::string::npos);
-      CHECK(what.find(needle) != std::string::npos);
-    }
-  };
+  auto refused = [&](const std::string& text, const std::string& needle) { testing::expect_refused(alg, text, needle); };
   refused(R"({"scene":"scenes/tiny-scale.json","size":[8,8]})", "perspective only");
   refused(R"({"scene":"scenes/glass-spheres.json","size":[0,8]})", "input.size[0]");
   refused(R"({"scene":"scenes/glass-spheres.json","size":[513,8]})", "input.size[0]");

@@ -3,6 +3,7 @@
 // visibility; z-pass failing with the eye inside a volume; the silhouette against a brute-force
 // edge count; bad input; and `scene raster --shadows volume`.
 #include <catch2/catch.hpp>
+#include "refusals.hpp"
 #include <filesystem>
 #include <map>
 #include "catalog.hpp"
@@ -155,15 +156,7 @@ TEST_CASE("shadow-volume: bad input is one line naming the problem", "[shadows][
            {R"({"scene":"scenes/cornell-box.json","size":[8,8],"map":{}})", "map"},
            {R"({"scene":"scenes/cornell-box.json","size":[0,8]})", "input.size"},
            {R"({"size":[8,8]})", "scene"}}) {
-    INFO(text);
-    try {
-      (void)alg.open(Json::parse(text), Numeric::exact);
-      FAIL("accepted");
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      CHECK(what.find('\n') == std::string::npos);
-      CHECK(what.find(needle) != std::string::npos);
-    }
+    testing::expect_refused(alg, text, needle);
   }
 }
 
@@ -181,17 +174,13 @@ TEST_CASE("scene raster --shadows volume: z-fail by default, z-pass on request, 
   CHECK(pass.out.find("light 0: z-pass") != std::string::npos);
   CHECK(pass.out.find("wrong 0 by z-pass") == std::string::npos);
   for (const std::string bad : {" --volume zboth", " --volume zpass --shadows map"}) {
-    std::filesystem::remove(png);
-    const testing::Ran r = testing::run_stepwise("scene raster " + scene + " --size 16x16 --shadows volume" + bad + " --out " + testing::sh_quote(png));
-    INFO(bad << ": " << r.err);
-    CHECK(r.status == 2);
-    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
-    CHECK(!std::filesystem::exists(png));
+    (void)testing::expect_cli_refused("scene raster " + scene + " --size 16x16 --shadows volume" + bad + " --out " + testing::sh_quote(png), png);
   }
 }
 
 #include "pipeline/raster_shade.hpp"
 #include "shadows/scene_shadows.hpp"
+#include "tracer/history.hpp"
 
 TEST_CASE("scene raster --shadows volume: the planned picture is the all-effects one but at points facing away or where the count errs",
           "[shadows][volume][planner]") {
