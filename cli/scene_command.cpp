@@ -269,7 +269,7 @@ int raster(const SceneCommands& c) {
     blocked = sh.blocked;
   }
   const std::vector<std::uint8_t> rgb = tracer::to_rgb8(
-      pipespec::shade_pixels(*rs, px, c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong, &blocked));
+      pipespec::shade_pixels(*rs, px, c.shading == "gouraud" ? pipespec::Shading::gouraud : pipespec::Shading::phong, c.shadows == "none" ? nullptr : &blocked));
   write_png(c.out, rgb.data(), static_cast<int>(px.width), static_cast<int>(px.height), 3);
   if (!c.depth_out.empty()) {
     const std::vector<std::uint8_t> grey = pipespec::depth_grey(px);

@@ -69,14 +69,26 @@ struct Shader {
     return lighting::shade(sc, none).rgb;
   }
 
-  V3 pixel(lighting::ShadeScene<double>& sc, std::int64_t i, std::int64_t j, std::int32_t object, std::int32_t prim, Shading mode) const {
+  // With shadows, a light adds nothing where the point's own face, turned toward the eye, turns away
+  // from it: the surface shadows itself there (exact visibility's "facing away"), though an
+  // interpolated normal may still face the light. Bits set in sc.blocked.
+  static void own_face(lighting::ShadeScene<double>& sc, const V3& p, const V3& face) {
+    for (std::size_t i = 0; i < sc.lights.size() && i < 32; ++i) {
+      const auto& l = sc.lights[i];
+      const V3 toward = l.type == lighting::LightType::directional ? l.where : V3(l.where - p);
+      if (!(dot(face, toward) > 0)) sc.blocked |= 1u << i;
+    }
+  }
+
+  V3 pixel(lighting::ShadeScene<double>& sc, std::int64_t i, std::int64_t j, std::int32_t object, std::int32_t prim, Shading mode, bool shadows) const {
     const V3 d = direction(i, j);
     const RasterObject& ro = s.objects[static_cast<std::size_t>(object)];
     if (ro.kind == tracer::ObjectKind::plane) {
       const tracer::Prim<double>& o = ts.objects[static_cast<std::size_t>(object)];
       const V3 p = eye + (dot(o.b, V3(o.a - eye)) / dot(o.b, d)) * d;
-      const V3 nu = unit(o.b);
-      return light(sc, object, p, dot(d, nu) > 0 ? -1.0 * nu : nu, uv(object, p, nu, {}));
+      const V3 nu = unit(o.b), toward_eye = dot(d, nu) > 0 ? -1.0 * nu : nu;
+      if (shadows) own_face(sc, p, toward_eye);
+      return light(sc, object, p, toward_eye, uv(object, p, nu, {}));
     }
     const std::size_t t = static_cast<std::size_t>(ro.first + std::max(prim, 0));
     const auto& tri = s.tris[t];
@@ -90,6 +102,7 @@ struct Shader {
     const double sum = b[0] + b[1] + b[2];
     for (double& w : b) w = sum > 0 ? w / sum : 1.0 / 3;
     const double facing = dot(d, g) > 0 ? -1.0 : 1.0;  // two-sided: the normals turn toward the eye
+    if (shadows) own_face(sc, p, facing * g);
     const auto& ns = s.normals[t];
     if (mode == Shading::phong) {
       const V3 nf = unit(facing * V3(b[0] * ns[0] + b[1] * ns[1] + b[2] * ns[2]));
@@ -114,7 +127,7 @@ std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels&
     for (std::int64_t i = 0; i < px.width; ++i) {
       const std::size_t k = static_cast<std::size_t>(j * px.width + i);
       sc.blocked = blocked ? (*blocked)[k] : 0;
-      if (px.objects[k] >= 0) out[k] = sh.pixel(sc, i, j, px.objects[k], px.prims[k], mode);
+      if (px.objects[k] >= 0) out[k] = sh.pixel(sc, i, j, px.objects[k], px.prims[k], mode, blocked != nullptr);
     }
   });
   return out;

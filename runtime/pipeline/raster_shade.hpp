@@ -18,7 +18,9 @@ std::string_view shading_name(Shading s);
 // triangle's plane. A plane has no vertices to light (its wedges reach infinity), so it is lit per
 // fragment in both modes.
 // blocked: per pixel, bit i set where light i is shadowed (it adds its ambient term only, as in
-// the tracer); none: every light reaches every pixel.
+// the tracer), and then also where the point's own face turns away from light i (a tessellated
+// surface shadows itself there, though its interpolated normal may face the light); none: no
+// shadows, every light reaches every pixel.
 std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels& px, Shading mode, const std::vector<std::uint32_t>* blocked = nullptr);
 
 // The depth buffer as grey levels, rows top first: near black, far white, nothing drawn white.
