@@ -1,4 +1,5 @@
 #include "shadows/projective_shadow_input.hpp"
+#include "shadows/shadow_volume_input.hpp"
 
 namespace sw::shadowspec {
 
@@ -47,8 +48,7 @@ ReceiverPlane receiver_plane(const RasterScene& s, std::size_t light, std::int64
       if (flat(s.objects[k].kind)) r.receiver = std::int32_t(k);
     if (r.receiver < 0) throw InputError("receiver: the scene has no plane or triangle to receive a projective shadow");
   }
-  const lighting::Light<Rational>& li = s.scene->lights.at(light);
-  r.light = {li.where.x, li.where.y, li.where.z, Rational(li.type == lighting::LightType::directional ? 0 : 1)};
+  r.light = homogeneous_light(s, light);
   // The plane from the receiver's first triangle (corner 0 is a point; a corner at infinity a direction).
   const auto& t = s.tris[std::size_t(s.objects[std::size_t(r.receiver)].first)].x;
   auto dir = [&](int k) {

@@ -5,25 +5,34 @@ namespace sw::shadowspec {
 
 using V4 = pipe::Vec4<Rational>;
 
-std::shared_ptr<const VolumeInput> volume_input(std::shared_ptr<const MapInput> seen, bool zfail) {
-  auto in = std::make_shared<VolumeInput>();
-  const RasterScene& s = *seen->scene;
-  in->seen = std::move(seen), in->zfail = zfail;
+shadow::VolumeMesh<Rational> volume_mesh(const RasterScene& s) {
+  shadow::VolumeMesh<Rational> mesh;
   std::map<std::array<Rational, 4>, std::int32_t> index;
   for (const auto& t : s.tris) {
     std::array<std::int32_t, 3> k{};
     for (int c = 0; c < 3; ++c) {
       const V4& x = t.x[std::size_t(c)];
-      const auto [it, fresh] = index.try_emplace({x.x, x.y, x.z, x.w}, std::int32_t(in->mesh.corners.size()));
-      if (fresh) in->mesh.corners.push_back(x);
+      const auto [it, fresh] = index.try_emplace({x.x, x.y, x.z, x.w}, std::int32_t(mesh.corners.size()));
+      if (fresh) mesh.corners.push_back(x);
       k[std::size_t(c)] = it->second;
     }
     const tracer::ObjectKind kind = s.objects[std::size_t(t.object)].kind;
-    in->mesh.tris.push_back(k);
-    in->mesh.closed.push_back(kind == tracer::ObjectKind::sphere || kind == tracer::ObjectKind::box);
+    mesh.tris.push_back(k);
+    mesh.closed.push_back(kind == tracer::ObjectKind::sphere || kind == tracer::ObjectKind::box);
   }
-  const lighting::Light<Rational>& li = s.scene->lights.at(in->seen->light);
-  in->light = {li.where.x, li.where.y, li.where.z, Rational(li.type == lighting::LightType::directional ? 0 : 1)};
+  return mesh;
+}
+
+pipe::Vec4<Rational> homogeneous_light(const RasterScene& s, std::size_t light) {
+  const lighting::Light<Rational>& li = s.scene->lights.at(light);
+  return {li.where.x, li.where.y, li.where.z, Rational(li.type == lighting::LightType::directional ? 0 : 1)};
+}
+
+std::shared_ptr<const VolumeInput> volume_input(std::shared_ptr<const MapInput> seen, bool zfail) {
+  auto in = std::make_shared<VolumeInput>();
+  in->mesh = volume_mesh(*seen->scene);
+  in->light = homogeneous_light(*seen->scene, seen->light);
+  in->seen = std::move(seen), in->zfail = zfail;
   return in;
 }
 

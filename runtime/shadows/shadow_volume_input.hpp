@@ -22,6 +22,10 @@ struct VolumeInputRef {
   std::shared_ptr<const VolumeInput> p;
 };
 std::shared_ptr<const VolumeInput> volume_input(std::shared_ptr<const MapInput> seen, bool zfail);
+// The scene's triangles over its corners, each corner once (exact), closed where a sphere's or a box's.
+shadow::VolumeMesh<Rational> volume_mesh(const RasterScene& s);
+// Light i as a homogeneous point: (position, 1), or (toward the light, 0) for a directional one.
+pipe::Vec4<Rational> homogeneous_light(const RasterScene& s, std::size_t light);
 VolumeInputRef parse_volume_input(const Json& j);
 
 // Per pixel, row 0 at the top: the chosen count's verdict (-1: no surface, 0 shadowed, 1 lit), the
