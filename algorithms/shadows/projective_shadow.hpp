@@ -87,7 +87,7 @@ template <class Num> std::vector<pipe::Vec4<Num>> clip_half_spaces(std::vector<p
 template <NumberType Num, StepProbe Probe = NoProbe>
 ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const std::vector<pipe::RasterTriangle<Num>>& tris, std::int32_t receiver,
                                        const pipe::Vec4<Num>& P, const pipe::Vec4<Num>& L, const ProjectiveParams<Num>& p, Probe& probe) {
-  using S_ = ProjectiveShadow;
+  using Lines = ProjectiveShadow;
   ProjectiveImage<Num> out;
   const pipe::RasterImage<Num> img = [&] {
     const auto call = nested<pipe::SceneRaster>(probe);
@@ -98,17 +98,17 @@ ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const
   out.objects.assign(pixels, -1), out.shadowed.assign(pixels, 0);
   for (std::size_t i = 0; i < pixels; ++i)
     if (out.eye.id[i] >= 0) out.objects[i] = img.drawn[std::size_t(out.eye.id[i])][0];
-  if constexpr (Probe::on) probe.step(S_::depth, StepKind::init).idx("passed", out.eye.passed);
+  if constexpr (Probe::on) probe.step(Lines::depth, StepKind::init).idx("passed", out.eye.passed);
   const pipe::Mat4<Num> S = shadow_matrix(P, L);
   if constexpr (Probe::on) {
     std::array<Num, 16> m;
     for (int i = 0; i < 16; ++i) m[std::size_t(i)] = S[std::size_t(i / 4)][std::size_t(i % 4)];
-    probe.step(S_::matrix, StepKind::init).num("PL", dot4(P, L)).list("S", std::span<const Num>(m));
+    probe.step(Lines::matrix, StepKind::init).num("PL", dot4(P, L)).list("S", std::span<const Num>(m));
   }
   std::vector<std::uint8_t> stencil(pixels, 0);
   std::int64_t on = 0;
   for (std::size_t i = 0; i < pixels; ++i) stencil[i] = out.objects[i] == receiver, on += stencil[i];
-  if constexpr (Probe::on) probe.step(S_::stencil, StepKind::init).idx("receiver", receiver).idx("pixels", on);
+  if constexpr (Probe::on) probe.step(Lines::stencil, StepKind::init).idx("receiver", receiver).idx("pixels", on);
   // w(S X) = (P . L) X.w - L.w (P . X): the row of S that gives w.
   const pipe::Vec4<Num> w_row{S[3][0], S[3][1], S[3][2], S[3][3]};
   const pipe::Mat4<Num> M = pipe::raster_matrix(cam);
@@ -120,7 +120,7 @@ ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const
     // A triangle in the plane itself shadows nothing of it; the rest is cut to the slab.
     const bool in_plane = dot4(P, t.x[0]) == Num(0) && dot4(P, t.x[1]) == Num(0) && dot4(P, t.x[2]) == Num(0);
     const std::vector<pipe::Vec4<Num>> K = in_plane ? std::vector<pipe::Vec4<Num>>{} : clip_half_spaces<Num>({t.x[0], t.x[1], t.x[2]}, {P, w_row});
-    if constexpr (Probe::on) probe.step(S_::occluder, K.empty() ? StepKind::miss : StepKind::visit).idx("object", t.object).idx("prim", t.prim).idx("corners", std::int64_t(K.size()));
+    if constexpr (Probe::on) probe.step(Lines::occluder, K.empty() ? StepKind::miss : StepKind::visit).idx("object", t.object).idx("prim", t.prim).idx("corners", std::int64_t(K.size()));
     if (K.empty()) continue;
     ++out.occluders;
     std::vector<pipe::Vec4<Num>> shadow;
@@ -135,7 +135,7 @@ ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const
       if constexpr (Probe::on) {
         std::array<Vec2<Num>, pipe::kMaxClipCorners> xy;
         for (int q = 0; q < C.k; ++q) xy[std::size_t(q)] = {w[std::size_t(q)].x, w[std::size_t(q)].y};
-        probe.step(S_::project, StepKind::advance).idx("corners", C.k).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(xy.data(), std::size_t(C.k))).label("S K").replace();
+        probe.step(Lines::project, StepKind::advance).idx("corners", C.k).geo_list(GeoKind::polygon, std::span<const Vec2<Num>>(xy.data(), std::size_t(C.k))).label("S K").replace();
       }
       for (int q = 1; q + 1 < C.k; ++q) {
         const std::array<Vec3<Num>, 3> v{w[0], w[std::size_t(q)], w[std::size_t(q + 1)]};
@@ -143,7 +143,7 @@ ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const
         if (plane.area2 == Num(0)) continue;
         ++out.polygons;
         const Num o = pipe::polygon_offset(plane, p.factor, p.units, r);
-        if constexpr (Probe::on) probe.step(S_::offset, StepKind::advance).num("zx", plane.zx).num("zy", plane.zy).num("o", o);
+        if constexpr (Probe::on) probe.step(Lines::offset, StepKind::advance).num("zx", plane.zx).num("zy", plane.zy).num("o", o);
         pipe::covered_samples(v, cam.width, cam.height, samples);
         for (const Pixel& s : samples) {
           const std::size_t at = std::size_t(s.y * cam.width + s.x);
@@ -151,16 +151,16 @@ ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const
           const Num& D = out.eye.depth[at];
           ++out.fragments;
           out.ties += d == D;
-          if constexpr (Probe::on) probe.step(S_::fragment, StepKind::advance).idx("i", s.x).idx("j", s.y).num("d", d).num("D", D).pixel(s);
+          if constexpr (Probe::on) probe.step(Lines::fragment, StepKind::advance).idx("i", s.x).idx("j", s.y).num("d", d).num("D", D).pixel(s);
           const bool depth_ok = p.lequal ? !(D < d) : d < D;
           const bool pass = depth_ok && (!p.stencil || stencil[at] == 1);
-          if constexpr (Probe::on) probe.step(S_::test, StepKind::decide).idx("depth", depth_ok).idx("stencil", stencil[at]).idx("pass", pass);
+          if constexpr (Probe::on) probe.step(Lines::test, StepKind::decide).idx("depth", depth_ok).idx("stencil", stencil[at]).idx("pass", pass);
           if (!pass) continue;
           ++out.passed;
           out.off_receiver += out.objects[at] != receiver;
           out.doubled += out.shadowed[at] != 0;
           out.shadowed[at] = 1, stencil[at] = 2;
-          if constexpr (Probe::on) probe.step(S_::darken, StepKind::plot).pixel(s).value(Num(1)).keep();
+          if constexpr (Probe::on) probe.step(Lines::darken, StepKind::plot).pixel(s).value(Num(1)).keep();
         }
       }
     }
@@ -168,7 +168,7 @@ ProjectiveImage<Num> projective_shadow(const pipe::RasterCamera<Num>& cam, const
   if constexpr (Probe::on) {
     std::int64_t dark = 0;
     for (char c : out.shadowed) dark += c;
-    probe.step(S_::done, StepKind::done).idx("shadowed", dark).idx("ties", out.ties).idx("fragments", out.fragments);
+    probe.step(Lines::done, StepKind::done).idx("shadowed", dark).idx("ties", out.ties).idx("fragments", out.fragments);
   }
   return out;
 }
