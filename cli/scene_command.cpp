@@ -216,17 +216,17 @@ int raster(const SceneCommands& c) {
     const std::uint64_t fragments = std::uint64_t(pipespec::draw(*rs, Numeric::f64).fragments);
     // A shadow pass per light: at most six views, each its triangles and its texels' fragments.
     const bool rounded = mode == Numeric::f32 || mode == Numeric::f64;
-    std::uint64_t maps = c.shadows == "map" && !rounded
+    std::uint64_t shadow_work = c.shadows == "map" && !rounded
                              ? rs->scene->lights.size() * 6 * (pipespec::kWorkPerTriangle * rs->tris.size() + std::uint64_t(c.map_size * c.map_size))
                              : 0;
     // Stencil volumes: per light the eye pass again, and the volumes' fragments (double's counts).
-    if (c.shadows == "volume" && !rounded) maps = rs->scene->lights.size() * (pipespec::kWorkPerTriangle * 3 * rs->tris.size() + 4 * fragments);
+    if (c.shadows == "volume" && !rounded) shadow_work = rs->scene->lights.size() * (pipespec::kWorkPerTriangle * 3 * rs->tris.size() + 4 * fragments);
     const std::uint64_t work = pipespec::kWorkPerTriangle * rs->tris.size() + pipespec::kWorkPerFragment * fragments +
-                               (c.identity ? pipespec::kWorkPerRay * std::uint64_t(rs->width * rs->height) : 0) + maps;
+                               (c.identity ? pipespec::kWorkPerRay * std::uint64_t(rs->width * rs->height) : 0) + shadow_work;
     if (work > c.max_work)
       throw InputError("this scene implies about " + std::to_string(work) + " units of exact work (" + std::to_string(rs->tris.size()) +
                        " triangles x 50, " + std::to_string(fragments) + " fragments" + (c.identity ? ", a ray a pixel x 3" : "") +
-                       (maps ? ", shadow maps " + std::to_string(maps) : "") +
+                       (shadow_work ? ", shadow passes " + std::to_string(shadow_work) : "") +
                        "), more than the budget of " + std::to_string(c.max_work) + " (--max-work raises it)");
   }
   bool fell_back = false;

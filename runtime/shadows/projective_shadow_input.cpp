@@ -97,9 +97,7 @@ ProjectiveInputRef parse_projective_input(const Json& j) {
   } catch (const InputError& e) {
     throw InputError("input." + std::string(e.what()));
   }
-  MapOptions o;
-  o.size = 1;  // the views are shadow-map's; this needs only the seen points
-  return {projective_input(map_input(std::move(ls.scene), ls.light, o), r, p)};
+  return {projective_input(seen_input(std::move(ls.scene), ls.light), r, p)};
 }
 
 ProjectivePixels projective_verdicts(const ProjectiveInput& in, const std::vector<char>& bottom_up) {
@@ -155,10 +153,8 @@ ProjectivePixels projective_oracle(const ProjectiveInput& in) {
     if (den == 0) continue;  // the ray runs along the plane
     const Rational tq = -shadow::dot4(in.plane, V4{r.o.x, r.o.y, r.o.z, Rational(1)}) / den;
     if (tq < 0) continue;  // the plane lies behind the near plane here
-    const V3 Q = on_receiver ? p.p : V3(r.o + V3(tq * r.d));
-    const V3 op = p.p - r.o;  // P = o + t d: t from a component where d is not 0
-    const Rational tp = r.d.x != 0 ? op.x / r.d.x : r.d.y != 0 ? op.y / r.d.y : op.z / r.d.z;
-    const Rational D = window_depth(cam, on_receiver ? tq : tp), d = std::clamp(Rational(window_depth(cam, tq) + o), Rational(0), Rational(1));
+    const V3 Q = r.o + V3(tq * r.d);  // on the receiver, the seen point itself (tq = p.t)
+    const Rational D = window_depth(cam, p.t), d = std::clamp(Rational(window_depth(cam, tq) + o), Rational(0), Rational(1));
     if (!(in.params.lequal ? d <= D : d < D)) continue;
     const V4 X{Q.x, Q.y, Q.z, Rational(1)};
     const std::int64_t jb = s.height - 1 - j;  // GL's row

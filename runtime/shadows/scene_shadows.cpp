@@ -17,7 +17,7 @@ SceneShadows scene_shadows(const std::shared_ptr<const RasterScene>& s, ShadowMe
       out.lights.push_back(std::move(l));
       continue;
     }
-    l.in = map_input(s, i, o, truth, 0);
+    l.in = method == ShadowMethod::map ? map_input(s, i, o, truth, 0) : seen_input(s, i, truth, 0);
     std::vector<int> lit;
     if (method == ShadowMethod::map) {
       l.map = looked_up(*l.in, n);

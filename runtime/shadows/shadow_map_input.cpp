@@ -52,11 +52,14 @@ MapOptions parse_map_options(const Json& map, const std::string& what, std::int6
   return o;
 }
 
-std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const MapOptions& o,
-                                          const pipespec::RasterTruth& truth, unsigned threads) {
+namespace {
+
+// The seen points and their exact visibility; a map's views only with options.
+std::shared_ptr<const MapInput> light_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const MapOptions* o,
+                                            const pipespec::RasterTruth& truth, unsigned threads) {
   auto in = std::make_shared<MapInput>();
-  in->scene = std::move(scene), in->light = light, in->options = o;
-  in->views = light_views(*in->scene, light, o.size);
+  in->scene = std::move(scene), in->light = light;
+  if (o) in->options = *o, in->views = light_views(*in->scene, light, o->size);
   in->points = seen_points(*in->scene, truth);
   for (const SeenPoint& p : in->points) {
     const RasterScene& s = *in->scene;
@@ -80,9 +83,24 @@ std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> sce
   });
   return in;
 }
+
+}  // namespace
+
+std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const MapOptions& o,
+                                          const pipespec::RasterTruth& truth, unsigned threads) {
+  return light_input(std::move(scene), light, &o, truth, threads);
+}
 std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const MapOptions& o, unsigned threads) {
   const pipespec::RasterTruth truth = pipespec::raster_truth(*scene, threads);
-  return map_input(std::move(scene), light, o, truth, threads);
+  return light_input(std::move(scene), light, &o, truth, threads);
+}
+std::shared_ptr<const MapInput> seen_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const pipespec::RasterTruth& truth,
+                                           unsigned threads) {
+  return light_input(std::move(scene), light, nullptr, truth, threads);
+}
+std::shared_ptr<const MapInput> seen_input(std::shared_ptr<const RasterScene> scene, std::size_t light, unsigned threads) {
+  const pipespec::RasterTruth truth = pipespec::raster_truth(*scene, threads);
+  return light_input(std::move(scene), light, nullptr, truth, threads);
 }
 
 MapPixels looked_up(const MapInput& in, Numeric n) {

@@ -46,6 +46,10 @@ std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> sce
 // The same from the eye's ray cast, already made (`scene raster` shares one among its lights).
 std::shared_ptr<const MapInput> map_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const MapOptions& o,
                                           const pipespec::RasterTruth& truth, unsigned threads = 1);
+// The seen points and their exact visibility alone, no views (stencil volumes, projective shadows).
+std::shared_ptr<const MapInput> seen_input(std::shared_ptr<const RasterScene> scene, std::size_t light, unsigned threads = 1);
+std::shared_ptr<const MapInput> seen_input(std::shared_ptr<const RasterScene> scene, std::size_t light, const pipespec::RasterTruth& truth,
+                                           unsigned threads = 1);
 
 MapInputRef parse_map_input(const Json& j);
 // The common keys of the family's inputs (scene, size, stacks, light), the other keys checked by

@@ -103,7 +103,7 @@ std::vector<SeenPoint> seen_points(const RasterScene& s, const pipespec::RasterT
       const pipespec::PixelTruth& p = truth.px[k];
       if (p.object < 0) continue;
       const ray::Ray3<Rational> r = pipespec::pixel_ray(s.camera, i, j);
-      out.push_back({k, V3(r.o + V3(p.t * r.d)), p.object, p.prim});
+      out.push_back({k, V3(r.o + V3(p.t * r.d)), p.t, p.object, p.prim});
     }
   return out;
 }
@@ -154,36 +154,46 @@ Rational window_slope(const pipe::Mat4<Rational>& M, const pipe::RasterCamera<Ra
   return std::max(num::abs(zx), num::abs(zy));
 }
 
-bool segment_crosses(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X, const pipe::Vec4<Rational>& R) {
-  auto side = [&](auto f) {
-    const int s = exact_sign_of([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(X)); });
-    return s != 0 ? s : -exact_sign_of([&]<class Num>(std::type_identity<Num> n) { return f(n, v4_in<Num>(R)); });
+namespace {
+
+// The signs that place the segment from X to L against triangle t: L's and X's side of its plane,
+// and the line XL's turn about each edge. With R, a sign that is 0 at X is taken just before X
+// (at X - e R: the sign of -R's, each test being linear in X).
+struct SegmentSigns {
+  int light = 0, here = 0;
+  std::array<int, 3> edge{};
+};
+SegmentSigns segment_signs(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X,
+                           const pipe::Vec4<Rational>* R) {
+  auto at = [&](const pipe::Vec4<Rational>& a, const pipe::Vec4<Rational>& b, const pipe::Vec4<Rational>& c) {  // det[X a b c]
+    const int s = exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(X), v4_in<Num>(a), v4_in<Num>(b), v4_in<Num>(c)); });
+    if (s != 0 || !R) return s;
+    return -exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(*R), v4_in<Num>(a), v4_in<Num>(b), v4_in<Num>(c)); });
   };
-  const int light = exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(L), v4_in<Num>(t[0]), v4_in<Num>(t[1]), v4_in<Num>(t[2])); });
-  const int here = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(t[0]), v4_in<Num>(t[1]), v4_in<Num>(t[2])); });
-  if (here == 0 || here == light) return false;
-  int first = 0;
-  for (int k = 0; k < 3; ++k) {  // clang 14 captures no structured binding in a lambda
-    const pipe::Vec4<Rational>&p = t[std::size_t(k)], &q = t[std::size_t((k + 1) % 3)];
-    const int s = side([&]<class Num>(std::type_identity<Num>, const pipe::Vec4<Num>& x) { return shadow::det4(x, v4_in<Num>(L), v4_in<Num>(p), v4_in<Num>(q)); });
-    if (s == 0 || (first != 0 && s != first)) return false;
-    first = s;
-  }
-  return true;
+  SegmentSigns g;
+  g.light = exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(L), v4_in<Num>(t[0]), v4_in<Num>(t[1]), v4_in<Num>(t[2])); });
+  g.here = at(t[0], t[1], t[2]);
+  for (int k = 0; k < 3; ++k) g.edge[std::size_t(k)] = at(L, t[std::size_t(k)], t[std::size_t((k + 1) % 3)]);
+  return g;
+}
+
+// Through the relative interior: X off the plane on the far side from L, the line inside every edge.
+bool inside(const SegmentSigns& g) {
+  const auto& e = g.edge;
+  return g.light != 0 && g.here != 0 && g.here != g.light && ((e[0] > 0 && e[1] > 0 && e[2] > 0) || (e[0] < 0 && e[1] < 0 && e[2] < 0));
+}
+
+}  // namespace
+
+bool segment_crosses(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X, const pipe::Vec4<Rational>& R) {
+  return inside(segment_signs(t, L, X, &R));
 }
 
 Meeting segment_meets(const std::array<pipe::Vec4<Rational>, 3>& t, const pipe::Vec4<Rational>& L, const pipe::Vec4<Rational>& X) {
-  auto sign = [&](const pipe::Vec4<Rational>& a, const pipe::Vec4<Rational>& b, const pipe::Vec4<Rational>& c, const pipe::Vec4<Rational>& d) {
-    return exact_sign_of([&]<class Num>(std::type_identity<Num>) { return shadow::det4(v4_in<Num>(a), v4_in<Num>(b), v4_in<Num>(c), v4_in<Num>(d)); });
-  };
-  const int light = sign(L, t[0], t[1], t[2]);
-  if (light == 0) return {};
-  const int here = sign(X, t[0], t[1], t[2]);
-  if (here == light) return {};
-  const std::array<int, 3> e{sign(X, L, t[0], t[1]), sign(X, L, t[1], t[2]), sign(X, L, t[2], t[0])};
-  const bool all_pos = e[0] > 0 && e[1] > 0 && e[2] > 0, all_neg = e[0] < 0 && e[1] < 0 && e[2] < 0;
-  const bool no_neg = e[0] >= 0 && e[1] >= 0 && e[2] >= 0, no_pos = e[0] <= 0 && e[1] <= 0 && e[2] <= 0;
-  return {here != 0 && (all_pos || all_neg), no_neg || no_pos};
+  const SegmentSigns g = segment_signs(t, L, X, nullptr);
+  if (g.light == 0 || g.here == g.light) return {};
+  const auto& e = g.edge;
+  return {inside(g), (e[0] >= 0 && e[1] >= 0 && e[2] >= 0) || (e[0] <= 0 && e[1] <= 0 && e[2] <= 0)};
 }
 
 }  // namespace sw::shadowspec

@@ -34,6 +34,7 @@ LightViews light_views(const RasterScene& s, std::size_t light, std::int64_t siz
 struct SeenPoint {
   std::size_t pixel = 0;
   Vec3<Rational> p;
+  Rational t;  // p = o + t d on pixel_ray
   std::int32_t object = -1, prim = -1;
 };
 std::vector<SeenPoint> seen_points(const RasterScene& s, const pipespec::RasterTruth& truth);

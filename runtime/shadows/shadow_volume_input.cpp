@@ -46,9 +46,7 @@ VolumeInputRef parse_volume_input(const Json& j) {
     if (!m.is_string() || (m != "zfail" && m != "zpass")) throw InputError("input.method: expected \"zfail\" or \"zpass\"");
     zfail = m == "zfail";
   }
-  MapOptions o;
-  o.size = 1;  // the views are shadow-map's; a volume needs only the seen points
-  return {volume_input(map_input(std::move(ls.scene), ls.light, o), zfail)};
+  return {volume_input(seen_input(std::move(ls.scene), ls.light), zfail)};
 }
 
 VolumePixels volume_pixels(const VolumeInput& in, std::vector<std::int64_t> zpass_top, std::vector<std::int64_t> zfail_top) {

@@ -130,6 +130,10 @@ TEST_CASE("projective-shadow: every exact step against a standalone eye pass and
     const auto& P = in->plane;
     const auto& L = in->light;
     const Rational PL = P.x * L.x + P.y * L.y + P.z * L.z + P.w * L.w;
+    // The plane's slope in the eye's window from a point on it and two directions along it.
+    const Vec3<Rational> n{P.x, P.y, P.z}, Y = Rational(-P.w) / dot(n, n) * n;
+    const Vec3<Rational> e1 = num::abs(n.x) < num::abs(n.y) ? cross(n, Vec3<Rational>{1, 0, 0}) : cross(n, Vec3<Rational>{0, 1, 0});
+    const Rational slope = window_slope(pipe::raster_matrix(sc.camera), sc.camera, Y, e1, cross(n, e1));
     std::vector<std::uint8_t> stencil(eye.buffer.id.size(), 0);
     std::int64_t on = 0;
     for (std::size_t i = 0; i < stencil.size(); ++i)
@@ -168,11 +172,13 @@ TEST_CASE("projective-shadow: every exact step against a standalone eye pass and
             if (below || beyond) ++cut_away;
           }
       } else if (line == "project") {
-        (void)sv["corners"];
-        (void)g.take(GeoKind::polygon);
+        const Rational k = sv["corners"];
+        CHECK((k >= 3 && k <= pipe::kMaxClipCorners));
+        CHECK(Rational(std::int64_t(g.take(GeoKind::polygon).values.size())) == 2 * k);
       } else if (line == "offset") {
-        const Rational o = in->params.factor * std::max(num::abs(sv["zx"]), num::abs(sv["zy"])) + in->params.units / Rational(1 << 24);
-        CHECK(sv["o"] == o);
+        // The shadow polygon lies in the receiver's plane: its window slope is the plane's, by closed form.
+        CHECK(std::max(num::abs(sv["zx"]), num::abs(sv["zy"])) == slope);
+        CHECK(sv["o"] == in->params.factor * slope + in->params.units / Rational(1 << 24));
       } else if (line == "fragment") {
         fi = sv["i"].get_num().get_si(), fj = sv["j"].get_num().get_si();
         CHECK(g.take(GeoKind::pixel).values == std::vector<Rational>{Rational(fi), Rational(fj)});
