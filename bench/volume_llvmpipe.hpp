@@ -4,12 +4,11 @@
 // matrix as GL's projection and points at infinity as w = 0. Every pixel whose point the eye sees
 // is compared with our exact counts and with exact visibility. OSMesa only, never libGL.
 #pragma once
-#include <GL/osmesa.h>
-#include <GL/gl.h>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "osmesa_context.hpp"
 #include "shadows/shadow_volume_input.hpp"
 
 namespace sw::volpeer {
@@ -21,61 +20,14 @@ struct LpStencil {
 
 class VolumeLlvmpipe {
  public:
-  VolumeLlvmpipe(int width, int height) : w_(width), h_(height), buffer_(std::size_t(width) * std::size_t(height) * 4) {
-    ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
-    if (!ctx_) throw std::runtime_error("OSMesa could not create a context with depth and stencil");
-    make_current();
-    GLint depth = 0, stencil = 0;
-    glGetIntegerv(GL_DEPTH_BITS, &depth);
-    glGetIntegerv(GL_STENCIL_BITS, &stencil);
-    if (depth != 24 || stencil != 8) throw std::runtime_error("OSMesa gave " + std::to_string(depth) + " depth and " + std::to_string(stencil) + " stencil bits");
-  }
-  ~VolumeLlvmpipe() {
-    if (ctx_) OSMesaDestroyContext(ctx_);
-  }
-  VolumeLlvmpipe(const VolumeLlvmpipe&) = delete;
-  VolumeLlvmpipe& operator=(const VolumeLlvmpipe&) = delete;
-  std::string renderer() {
-    make_current();
-    const auto* s = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return s ? s : "?";
-  }
+  VolumeLlvmpipe(int width, int height) : gl_(width, height) {}
+  std::string renderer() { return gl_.renderer(); }
 
   // The eye's pass of the scene's triangles, then the faces' stencil counts by z-fail or z-pass.
   LpStencil draw(const pipe::Mat4<float>& M, const std::vector<pipe::RasterTriangle<float>>& tris,
                  const std::vector<shadow::VolumeFace<float>>& faces, bool zfail) {
-    make_current();
-    glViewport(0, 0, w_, h_);
-    glDepthRange(0, 1);
-    glDisable(GL_DITHER);
-    glDisable(GL_BLEND);
-    glDisable(GL_LIGHTING);
-    glShadeModel(GL_FLAT);
-    glMatrixMode(GL_PROJECTION);
-    float m[16];
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) m[c * 4 + r] = M[std::size_t(r)][std::size_t(c)];  // column-major
-    glLoadMatrixf(m);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glDepthMask(GL_TRUE);  // glClear honours the masks the last volumes left
-    glColorMask(1, 1, 1, 1);
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    // The eye's pass: GL_LESS, the object's id + 1 in red and green.
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glBegin(GL_TRIANGLES);
-    for (const auto& t : tris) {
-      const int id = t.object + 1;
-      glColor4ub(GLubyte(id & 255), GLubyte(id >> 8), 0, 255);
-      for (const auto& x : t.x) glVertex4f(x.x, x.y, x.z, x.w);
-    }
-    glEnd();
+    const int w = gl_.width(), h = gl_.height();
+    gl_.eye_pass(M, tris, w, h);
     // The volumes: no depth or colour writes, the stencil counting by facing.
     glDepthMask(GL_FALSE);
     glColorMask(0, 0, 0, 0);
@@ -96,29 +48,12 @@ class VolumeLlvmpipe {
         glEnd();
       }
     }
-    glFinish();
     glFrontFace(GL_CCW);
-    std::vector<std::uint8_t> rgba(std::size_t(w_) * std::size_t(h_) * 4), st(std::size_t(w_) * std::size_t(h_));
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w_, h_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    glReadPixels(0, 0, w_, h_, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, st.data());
-    LpStencil out{std::vector<std::int32_t>(st.size(), -1), std::vector<std::uint8_t>(st.size(), 0)};
-    for (int j = 0; j < h_; ++j)
-      for (int i = 0; i < w_; ++i) {  // GL's rows bottom up to rows top down
-        const std::size_t from = std::size_t(j) * std::size_t(w_) + std::size_t(i), to = std::size_t(h_ - 1 - j) * std::size_t(w_) + std::size_t(i);
-        out.objects[to] = std::int32_t(rgba[from * 4]) + 256 * std::int32_t(rgba[from * 4 + 1]) - 1;
-        out.stencil[to] = st[from];
-      }
-    return out;
+    return {gl_.object_ids(w, h), gl_.read_bytes(GL_STENCIL_INDEX, w, h)};
   }
 
  private:
-  void make_current() {
-    if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w_, h_)) throw std::runtime_error("OSMesa could not make its context current");
-  }
-  int w_, h_;
-  OSMesaContext ctx_ = nullptr;
-  std::vector<std::uint8_t> buffer_;
+  peer::OsmesaContext gl_;
 };
 
 // llvmpipe against the exact counts on one input, every pixel a point is seen at: how many differ,

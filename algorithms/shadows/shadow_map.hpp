@@ -32,10 +32,11 @@ template <class Num> struct MapPoint {
 };
 
 // Per point: `lit` from its own texel, `fraction` of the k x k taps that pass (1 when no view holds
-// it: nothing drawn from the light can shadow it there), and the view and texel it fell in.
+// it: nothing drawn from the light can shadow it there), the view and texel it fell in, the depth
+// stored there and its reference depth, biased.
 template <class Num> struct MapLookup {
   bool lit = true, outside = true;
-  Num fraction = Num(1);
+  Num fraction = Num(1), stored{}, ref{};
   int view = -1;
   std::int64_t i = 0, j = 0;
 };
@@ -125,7 +126,7 @@ std::vector<MapLookup<Num>> shadow_map(const std::vector<pipe::RasterCamera<Num>
     const Num slope = p.slope == Num(0) ? Num(0) : window_slope(M[static_cast<std::size_t>(v)], cam.width, cam.height, points[k]);
     if constexpr (Probe::on) probe.step(L::slope, StepKind::advance).num("s", slope);
     const Num ref = Num(d - p.bias - p.slope * slope);
-    r.lit = !(D < ref);
+    r.lit = !(D < ref), r.stored = D, r.ref = ref;
     if constexpr (Probe::on) probe.step(L::compare, StepKind::decide).num("ref", ref).num("D", D).idx("lit", r.lit);
     const std::int64_t h = p.pcf / 2;
     std::int64_t taps = 0, pass = 0;

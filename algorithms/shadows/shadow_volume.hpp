@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -83,6 +84,25 @@ template <class Num> pipe::Vec4<Num> extruded(const pipe::Vec4<Num>& x, const pi
   return {Num(x.x - x.w * L.x), Num(x.y - x.w * L.y), Num(x.z - x.w * L.z), Num(0)};
 }
 
+// For the 3D view: the finite corners' extent (at least 1), and where corner x is drawn: itself,
+// or a point at infinity `reach` beyond `from` along it.
+template <class Num> Num display_reach(const VolumeMesh<Num>& mesh) {
+  std::optional<std::array<Num, 6>> box;  // least and greatest x, y, z
+  for (const auto& x : mesh.corners)
+    if (x.w != Num(0)) {
+      const std::array<Num, 3> v{Num(x.x / x.w), Num(x.y / x.w), Num(x.z / x.w)};
+      if (!box) box = std::array<Num, 6>{v[0], v[1], v[2], v[0], v[1], v[2]};
+      for (std::size_t a = 0; a < 3; ++a) (*box)[a] = std::min((*box)[a], v[a]), (*box)[a + 3] = std::max((*box)[a + 3], v[a]);
+    }
+  if (!box) return Num(1);
+  return std::max({Num(1), Num((*box)[3] - (*box)[0]), Num((*box)[4] - (*box)[1]), Num((*box)[5] - (*box)[2])});
+}
+template <class Num> Vec3<Num> shown_at(const pipe::Vec4<Num>& x, const Vec3<Num>& from, const Num& reach) {
+  if (x.w != Num(0)) return {Num(x.x / x.w), Num(x.y / x.w), Num(x.z / x.w)};
+  const Num n = std::max({num::abs(x.x), num::abs(x.y), num::abs(x.z)});
+  return from + Num(reach / n) * Vec3<Num>{x.x, x.y, x.z};
+}
+
 // Precondition: L lies on no triangle. cam: the eye's (perspective, the far plane at infinity).
 template <NumberType Num, StepProbe Probe = NoProbe>
 StencilImage<Num> shadow_volume(const pipe::RasterCamera<Num>& cam, const std::vector<pipe::RasterTriangle<Num>>& tris,
@@ -95,7 +115,18 @@ StencilImage<Num> shadow_volume(const pipe::RasterCamera<Num>& cam, const std::v
   }();
   const std::size_t pixels = out.eye.depth.size();
   out.zpass.assign(pixels, 0), out.zfail.assign(pixels, 0);
-  if constexpr (Probe::on) probe.step(S::depth, StepKind::init).idx("passed", out.eye.passed);
+  [[maybe_unused]] const Num reach = Probe::on ? display_reach(mesh) : Num(1);
+  [[maybe_unused]] auto shown = [&](const pipe::Vec4<Num>& x, const Vec3<Num>& from) { return shown_at(x, from, reach); };
+  if constexpr (Probe::on) {
+    auto& st = probe.step(S::depth, StepKind::init).idx("passed", out.eye.passed);
+    if (L.w != Num(0)) st.point(Vec3<Num>{Num(L.x / L.w), Num(L.y / L.w), Num(L.z / L.w)}).label("light").keep();
+    for (const auto& t : tris) {
+      const auto first = std::find_if(t.x.begin(), t.x.end(), [](const pipe::Vec4<Num>& x) { return x.w != Num(0); });
+      if (first == t.x.end()) continue;
+      const Vec3<Num> from = shown(*first, {});
+      st.triangle(shown(t.x[0], from), shown(t.x[1], from), shown(t.x[2], from)).label("scene").keep();
+    }
+  }
   // The casters, turned to face the light; the directed edges' counts by their lower index first.
   std::vector<std::array<std::int32_t, 3>> casters;
   std::vector<char> turned;
@@ -135,14 +166,34 @@ StencilImage<Num> shadow_volume(const pipe::RasterCamera<Num>& cam, const std::v
     faces.push_back({{at(k[0]), at(t ? k[2] : k[1]), at(t ? k[1] : k[2])}, bool(t)});
     faces.push_back({{inf(k[0]), inf(k[2]), inf(k[1])}, false});
   }
-  if constexpr (Probe::on) probe.step(S::caps, StepKind::init).idx("caps", std::int64_t(faces.size()));
+  // The 3D view draws the volumes of finite casters (a plane's reach infinity themselves).
+  [[maybe_unused]] auto finite = [&](std::initializer_list<std::int32_t> ks) {
+    return std::all_of(ks.begin(), ks.end(), [&](std::int32_t i) { return at(i).w != Num(0); });
+  };
+  [[maybe_unused]] auto shown_far = [&](std::int32_t i) { return shown(inf(i), shown(at(i), {})); };
+  if constexpr (Probe::on) {
+    auto& st = probe.step(S::caps, StepKind::init).idx("caps", std::int64_t(faces.size()));
+    for (const auto& k : casters)
+      if (finite({k[0], k[1], k[2]})) {
+        st.triangle(shown(at(k[0]), {}), shown(at(k[1]), {}), shown(at(k[2]), {})).label("near cap").keep();
+        st.triangle(shown_far(k[0]), shown_far(k[2]), shown_far(k[1])).label("far cap").keep();
+      }
+  }
   for (const auto& [e, m] : silhouette)
     for (std::int64_t r = 0; r < m; ++r) {
       faces.push_back({{at(e[1]), at(e[0]), inf(e[0])}, false});
       faces.push_back({{at(e[1]), inf(e[0]), inf(e[1])}, false});
     }
   out.faces = std::int64_t(faces.size());
-  if constexpr (Probe::on) probe.step(S::sides, StepKind::init).idx("faces", out.faces);
+  if constexpr (Probe::on) {
+    auto& st = probe.step(S::sides, StepKind::init).idx("faces", out.faces);
+    for (const auto& [e, m] : silhouette) {
+      if (!finite({e[0], e[1]})) continue;
+      const Vec3<Num> a = shown(at(e[0]), {}), b = shown(at(e[1]), {});
+      st.triangle(b, a, shown_far(e[0])).label("side quad").keep();
+      st.triangle(b, shown_far(e[0]), shown_far(e[1])).label("side quad").keep();
+    }
+  }
   const pipe::Mat4<Num> M = pipe::raster_matrix(cam);
   const pipe::Viewport<Num> vp = pipe::raster_viewport(cam);
   std::vector<Pixel> samples;

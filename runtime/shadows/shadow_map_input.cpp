@@ -191,6 +191,7 @@ MapPixels oracle_pixels(const MapInput& in) {
     auto passes = [&](std::int64_t a, std::int64_t b) { return ref <= m.D[std::size_t(b * m.cam.width + a)]; };
     shadow::MapLookup<Rational>& l = looks[k];
     l.outside = false, l.view = v, l.i = i, l.j = j, l.lit = passes(i, j);
+    l.stored = m.D[std::size_t(j * m.cam.width + i)], l.ref = ref;
     std::int64_t taps = 0, pass = 0;
     for (std::int64_t b = std::max<std::int64_t>(0, j - o.pcf / 2); b <= std::min<std::int64_t>(m.cam.height - 1, j + o.pcf / 2); ++b)
       for (std::int64_t a = std::max<std::int64_t>(0, i - o.pcf / 2); a <= std::min<std::int64_t>(m.cam.width - 1, i + o.pcf / 2); ++a)

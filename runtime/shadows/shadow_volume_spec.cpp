@@ -31,7 +31,7 @@ struct ShadowVolumeSpec {
   using Algo = shadow::ShadowVolume;
   using Input = VolumeInputRef;
   using Output = SVOutput;
-  static constexpr std::array views{View::plane2d, View::table};
+  static constexpr std::array views{View::plane2d, View::orbit3d, View::table};
   static constexpr std::array numerics{Numeric::f32, Numeric::f64, Numeric::filtered, Numeric::exact};
   // The spot-lit scene's first spot over two spheres and the floor at 24 x 18, counted by z-fail.
   static inline const std::string example = R"({"scene":"scenes/spot-lit.json","size":[24,18],"stacks":3,"light":0,"method":"zfail"})";

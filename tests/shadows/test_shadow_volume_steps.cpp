@@ -31,6 +31,14 @@ Rational side_of(const std::array<V4, 3>& x, const V4& L) {
   return dot(n, L.w == 0 ? V3{L.x, L.y, L.z} : V3{L.x - x[0].x, L.y - x[0].y, L.z - x[0].z});
 }
 
+// The 3D view's items: a triangle at three points, kept, with its label.
+void check_shown(StepGeometry& g, const char* label, const std::array<V3, 3>& p) {
+  GeoItem& item = g.take(GeoKind::triangle3);
+  CHECK(item.values == std::vector<Rational>{p[0].x, p[0].y, p[0].z, p[1].x, p[1].y, p[1].z, p[2].x, p[2].y, p[2].z});
+  CHECK(item.label == label);
+  CHECK(item.life == "keep");
+}
+
 }  // namespace
 
 TEST_CASE("shadow-volume: every exact step against standalone passes and closed forms", "[shadows][volume][steps]") {
@@ -75,11 +83,52 @@ TEST_CASE("shadow-volume: every exact step against standalone passes and closed 
     std::int64_t fi = 0, fj = 0;
     Rational d, D;
     std::int64_t faces_seen = 0, lit = 0;
+    // The 3D view's closed forms: the finite corners' widest extent (at least 1); a point at
+    // infinity drawn that far beyond a finite point along its L-infinity unit direction; a corner
+    // extruded from the light.
+    Rational reach = 1;
+    for (int a = 0; a < 3; ++a) {
+      std::optional<Rational> lo, hi;
+      for (const V4& x : in->mesh.corners)
+        if (x.w != 0) {
+          const Rational v = (a == 0 ? x.x : a == 1 ? x.y : x.z) / x.w;
+          lo = lo ? std::min(*lo, v) : v, hi = hi ? std::max(*hi, v) : v;
+        }
+      if (lo) reach = std::max(reach, Rational(*hi - *lo));
+    }
+    auto beyond = [&](const V3& from, const V3& dir) {
+      const Rational n = std::max({abs(dir.x), abs(dir.y), abs(dir.z)});
+      return V3{from.x + reach / n * dir.x, from.y + reach / n * dir.y, from.z + reach / n * dir.z};
+    };
+    auto point_of = [](const V4& x) { return V3{x.x / x.w, x.y / x.w, x.z / x.w}; };
+    auto far_of = [&](std::int32_t i) {
+      const V3 x = point_of(in->mesh.corners[std::size_t(i)]);
+      return beyond(x, L.w == 0 ? V3{-L.x, -L.y, -L.z} : V3{x.x - L.x / L.w, x.y - L.y / L.w, x.z - L.z / L.w});
+    };
+    auto finite_corners = [&](std::initializer_list<std::int32_t> ks) {
+      return std::all_of(ks.begin(), ks.end(), [&](std::int32_t i) { return in->mesh.corners[std::size_t(i)].w != 0; });
+    };
+    std::vector<std::array<std::int32_t, 3>> caster_corners;  // in order, turned to face the light
     for_each_step<shadow::ShadowVolume>(t, [&](std::size_t, std::string_view line, StepValues& sv, StepGeometry& g) {
       if (line == "depth") {
         after_depth = true;
         CHECK(sv["passed"] == eye.passed);
         CHECK(nested == eye_steps.size());
+        if (L.w != 0) {
+          GeoItem& light = g.take(GeoKind::point3);
+          CHECK(light.values == std::vector<Rational>{L.x / L.w, L.y / L.w, L.z / L.w});
+          CHECK(light.label == "light");
+        }
+        for (const auto& tri : tris) {
+          const auto first = std::find_if(tri.x.begin(), tri.x.end(), [](const V4& x) { return x.w != 0; });
+          if (first == tri.x.end()) continue;
+          std::array<V3, 3> p;
+          for (int k = 0; k < 3; ++k) {
+            const V4& x = tri.x[std::size_t(k)];
+            p[std::size_t(k)] = x.w != 0 ? point_of(x) : beyond(point_of(*first), V3{x.x, x.y, x.z});
+          }
+          check_shown(g, "scene", p);
+        }
       } else if (line == "caster") {
         t_index = std::size_t(sv["t"].get_num().get_si());
         const auto& k = in->mesh.tris[t_index];
@@ -95,7 +144,7 @@ TEST_CASE("shadow-volume: every exact step against standalone passes and closed 
           CHECK(sv["turned"] == int(s < 0));
           auto c = k;
           if (s < 0) std::swap(c[1], c[2]);
-          ++casters;
+          ++casters, caster_corners.push_back(c);
           for (int e = 0; e < 3; ++e) ++net[{c[std::size_t(e)], c[std::size_t((e + 1) % 3)]}];
         }
       } else if (line == "edges") {
@@ -113,11 +162,30 @@ TEST_CASE("shadow-volume: every exact step against standalone passes and closed 
         CHECK(sv["directional"] == int(L.w == 0));
       } else if (line == "caps") {
         CHECK(sv["caps"] == 2 * casters);
+        for (const auto& k : caster_corners)
+          if (finite_corners({k[0], k[1], k[2]})) {
+            const auto& x = in->mesh.corners;
+            check_shown(g, "near cap", {point_of(x[std::size_t(k[0])]), point_of(x[std::size_t(k[1])]), point_of(x[std::size_t(k[2])])});
+            check_shown(g, "far cap", {far_of(k[0]), far_of(k[2]), far_of(k[1])});
+          }
       } else if (line == "sides") {
         std::int64_t sides = 0;
         for (const auto& [e, n] : net) {
           const auto back = net.find({e.second, e.first});
-          sides += std::max<std::int64_t>(0, n - (back == net.end() ? 0 : back->second));
+          const std::int64_t m = n - (back == net.end() ? 0 : back->second);
+          sides += std::max<std::int64_t>(0, m);
+        }
+        // The drawn sides: each silhouette edge (a, b) once, by its lower corner index first.
+        std::set<std::pair<std::int32_t, std::int32_t>> undirected;
+        for (const auto& [e, n] : net) undirected.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
+        for (const auto& [lo, hi] : undirected) {
+          const auto count = [&](std::int32_t a, std::int32_t b) { const auto it = net.find({a, b}); return it == net.end() ? 0 : it->second; };
+          const std::int64_t m = count(lo, hi) - count(hi, lo);
+          if (m == 0 || !finite_corners({lo, hi})) continue;
+          const std::int32_t a = m > 0 ? lo : hi, b = m > 0 ? hi : lo;
+          const V3 pa = point_of(in->mesh.corners[std::size_t(a)]), pb = point_of(in->mesh.corners[std::size_t(b)]);
+          check_shown(g, "side quad", {pb, pa, far_of(a)});
+          check_shown(g, "side quad", {pb, far_of(a), far_of(b)});
         }
         CHECK(sv["faces"] == 2 * casters + 2 * sides);
       } else if (line == "face") {

@@ -145,8 +145,10 @@ void paint_triangle(const Painter& p, const Item3& it) {
     if (!q) return;
     s[std::size_t(i)] = v2(*q);
   }
-  p.dl->AddTriangleFilled(s[0], s[1], s[2], kPrimFill);
-  for (int i = 0; i < 3; ++i) p.line(it.at(3 * i), it.at(3 * ((i + 1) % 3)), kPrim, 1.5f);
+  // A labelled triangle takes its label's colour (a shadow volume's caps and sides, the scene).
+  const ImU32 edge = label_colour(it.label, kPrim), fill = it.label ? (edge & ~IM_COL32_A_MASK) | (ImU32(60) << IM_COL32_A_SHIFT) : kPrimFill;
+  p.dl->AddTriangleFilled(s[0], s[1], s[2], fill);
+  for (int i = 0; i < 3; ++i) p.line(it.at(3 * i), it.at(3 * ((i + 1) % 3)), edge, 1.5f);
 }
 
 // A grid square on the plane around the foot of the scene's centre, and the normal at its point.
