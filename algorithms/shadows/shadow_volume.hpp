@@ -118,7 +118,7 @@ StencilImage<Num> shadow_volume(const pipe::RasterCamera<Num>& cam, const std::v
   [[maybe_unused]] const Num reach = Probe::on ? display_reach(mesh) : Num(1);
   [[maybe_unused]] auto shown = [&](const pipe::Vec4<Num>& x, const Vec3<Num>& from) { return shown_at(x, from, reach); };
   if constexpr (Probe::on) {
-    auto& st = probe.step(S::depth, StepKind::init).idx("passed", out.eye.passed);
+    auto& st = probe.step(S::depth, StepKind::init).idx("passed", out.eye.passed).point(cam.eye).label("eye").keep();
     if (L.w != Num(0)) st.point(Vec3<Num>{Num(L.x / L.w), Num(L.y / L.w), Num(L.z / L.w)}).label("light").keep();
     for (const auto& t : tris) {
       const auto first = std::find_if(t.x.begin(), t.x.end(), [](const pipe::Vec4<Num>& x) { return x.w != Num(0); });

@@ -114,6 +114,9 @@ TEST_CASE("shadow-volume: every exact step against standalone passes and closed 
         after_depth = true;
         CHECK(sv["passed"] == eye.passed);
         CHECK(nested == eye_steps.size());
+        GeoItem& eye_point = g.take(GeoKind::point3);
+        CHECK(eye_point.values == std::vector<Rational>{sc.camera.eye.x, sc.camera.eye.y, sc.camera.eye.z});
+        CHECK(eye_point.label == "eye");
         if (L.w != 0) {
           GeoItem& light = g.take(GeoKind::point3);
           CHECK(light.values == std::vector<Rational>{L.x / L.w, L.y / L.w, L.z / L.w});
