@@ -4,6 +4,7 @@
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -101,5 +102,16 @@ class OsmesaContext {
   OSMesaContext ctx_ = nullptr;
   std::vector<std::uint8_t> buffer_;
 };
+
+// A peer drawn through OSMesa (it has renderer()), or null when no context opens or the renderer
+// is not llvmpipe.
+template <class Peer, class... A> std::unique_ptr<Peer> llvmpipe_peer(A... args) {
+  try {
+    auto gl = std::make_unique<Peer>(args...);
+    return gl->renderer().find("llvmpipe") != std::string::npos ? std::move(gl) : nullptr;
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
 
 }  // namespace sw::peer

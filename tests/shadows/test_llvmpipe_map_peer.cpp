@@ -5,28 +5,14 @@
 // only where llvmpipe's float depths differ from the exact ones. The full run over every example
 // scene: bench/peer_llvmpipe_map.
 #ifdef SW_HAVE_VISUALIZER  // the visualizer's build requires OSMesa: configure fails without it
-#include <memory>
 #include "../../bench/map_llvmpipe.hpp"
 #include "peers.hpp"
 
 using namespace sw;
 
-namespace {
-
-bool open_map_llvmpipe(std::unique_ptr<mappeer::MapLlvmpipe>& gl, int w, int h, int map) {
-  try {
-    gl = std::make_unique<mappeer::MapLlvmpipe>(w, h, map);
-    return gl->renderer().find("llvmpipe") != std::string::npos;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
-}  // namespace
-
 TEST_CASE("llvmpipe's depth-texture compare is our exact lookup, with a bias and with PCF", "[shadows][map][llvmpipe]") {
-  std::unique_ptr<mappeer::MapLlvmpipe> gl;
-  SW_REQUIRE_PEER(open_map_llvmpipe(gl, 40, 30, 48), "OSMesa's llvmpipe with a depth buffer");
+  const std::unique_ptr<mappeer::MapLlvmpipe> gl = peer::llvmpipe_peer<mappeer::MapLlvmpipe>(40, 30, 48);
+  SW_REQUIRE_PEER(gl != nullptr, "OSMesa's llvmpipe with a depth buffer");
   mappeer::Comparison biased, unbiased;
   // spot-lit's light 0 is a spot (one cone), glass-spheres' a point light (six faces), eye-in-shadow's directional (a box).
   for (const char* scene : {"scenes/spot-lit.json", "scenes/glass-spheres.json", "scenes/eye-in-shadow.json", "scenes/textured.json"}) {

@@ -3,28 +3,14 @@
 // every pixel of five example inputs, and llvmpipe's z-pass fails with the eye in shadow exactly as
 // ours does. The full run over every example scene: bench/peer_llvmpipe_volume.
 #ifdef SW_HAVE_VISUALIZER  // the visualizer's build requires OSMesa: configure fails without it
-#include <memory>
 #include "../../bench/volume_llvmpipe.hpp"
 #include "peers.hpp"
 
 using namespace sw;
 
-namespace {
-
-bool open_llvmpipe(std::unique_ptr<volpeer::VolumeLlvmpipe>& gl, int w, int h) {
-  try {
-    gl = std::make_unique<volpeer::VolumeLlvmpipe>(w, h);
-    return gl->renderer().find("llvmpipe") != std::string::npos;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
-}  // namespace
-
 TEST_CASE("llvmpipe's stencil counts are our exact counts, z-fail and z-pass", "[shadows][volume][llvmpipe]") {
-  std::unique_ptr<volpeer::VolumeLlvmpipe> gl;
-  SW_REQUIRE_PEER(open_llvmpipe(gl, 48, 36), "OSMesa's llvmpipe with a depth and a stencil buffer");
+  const std::unique_ptr<volpeer::VolumeLlvmpipe> gl = peer::llvmpipe_peer<volpeer::VolumeLlvmpipe>(48, 36);
+  SW_REQUIRE_PEER(gl != nullptr, "OSMesa's llvmpipe with a depth and a stencil buffer");
   volpeer::Comparison all;
   std::int64_t zpass_wrong = 0;  // llvmpipe's z-pass against exact visibility
   for (const char* scene : {"scenes/spot-lit.json", "scenes/glass-spheres.json", "scenes/cornell-box.json", "scenes/eye-in-shadow.json", "scenes/textured.json"})
