@@ -166,7 +166,8 @@ StencilImage<Num> shadow_volume(const pipe::RasterCamera<Num>& cam, const std::v
     faces.push_back({{at(k[0]), at(t ? k[2] : k[1]), at(t ? k[1] : k[2])}, bool(t)});
     faces.push_back({{inf(k[0]), inf(k[2]), inf(k[1])}, false});
   }
-  // The 3D view draws the volumes of finite casters (a plane's reach infinity themselves).
+  // The 3D view draws the volumes of casters whose corners are all finite (a plane's wedges reach
+  // infinity already).
   [[maybe_unused]] auto finite = [&](std::initializer_list<std::int32_t> ks) {
     return std::all_of(ks.begin(), ks.end(), [&](std::int32_t i) { return at(i).w != Num(0); });
   };
