@@ -3,18 +3,29 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
 #include <thread>
 #include "tracer/photons.hpp"
 
 namespace sw::tracer {
 
+namespace {
+
+// A scene file as an input names it: relative to the data root.
+std::filesystem::path scene_path(const Json& v) {
+  std::filesystem::path p = v.get<std::string>();
+  if (p.is_relative()) p = data_root() / p;
+  return p.lexically_normal();
+}
+
+}  // namespace
+
 std::shared_ptr<const Scene> scene_input(const Json& v, std::string* name) {
   if (v.is_string()) {
-    std::filesystem::path p = v.get<std::string>();
-    *name = p.string();
-    if (p.is_relative()) p = data_root() / p;
+    *name = v.get<std::string>();
+    const std::filesystem::path p = scene_path(v);
     require_regular_file(p.string(), "input.scene");
-    return std::make_shared<const Scene>(read_scene_file(p.lexically_normal().string()));
+    return std::make_shared<const Scene>(read_scene_file(p.string()));
   }
   if (!v.is_object()) throw InputError("input.scene: expected a scene file (relative to the source tree) or a scene object");
   *name = "inline";
@@ -48,6 +59,16 @@ HistoryInput parse_history_input(const Json& j) {
     const auto s = pair(j, "size", 1, kMaxResolution, kMaxResolution);
     in.width = s[0], in.height = s[1];
   }
+  // What the prepared scene is built from: the file as it is now (its path, size and time), or the
+  // inline scene; then the image size, offset and plan below.
+  if (j["scene"].is_string()) {
+    const std::filesystem::path f = scene_path(j["scene"]);
+    std::error_code e;
+    in.scene_key = "file " + f.string() + " " + std::to_string(std::filesystem::file_size(f, e)) + " " +
+                   std::to_string(std::filesystem::last_write_time(f, e).time_since_epoch().count());
+  } else {
+    in.scene_key = j["scene"].dump();
+  }
   const auto p = pair(j, "pixel", 0, in.width - 1, in.height - 1);
   in.i = p[0], in.j = p[1];
   if (j.contains("offset")) {
@@ -65,6 +86,17 @@ HistoryInput parse_history_input(const Json& j) {
 }
 
 std::shared_ptr<const HistoryScene> history_scene(const HistoryInput& in) {
+  // The last one prepared is kept: the app traces a pixel at each click, and the photon map
+  // costs more than the pixel's trace. An input without a key (made in code) is never shared.
+  static std::mutex guard;
+  static std::string last_key;
+  static std::shared_ptr<const HistoryScene> last;
+  const std::string key = in.scene_key.empty() ? std::string() : in.scene_key + " | " + std::to_string(in.width) + "x" + std::to_string(in.height) + " " +
+                                                                     std::to_string(int(in.offset)) + " " + std::to_string(in.all_effects);
+  if (!key.empty()) {
+    const std::lock_guard lock(guard);
+    if (last && key == last_key) return last;
+  }
   auto h = std::make_shared<HistoryScene>();
   h->scene = trace_scene(*in.scene, in.width, in.height);
   h->scene.offset = in.offset;
@@ -73,6 +105,10 @@ std::shared_ptr<const HistoryScene> history_scene(const HistoryInput& in) {
     std::uint64_t rays = 0;
     build_photon_map(*in.scene, h->scene, std::max(1u, std::thread::hardware_concurrency()), h->photons, rays);
     h->scene.caustics = &h->photons;
+  }
+  if (!key.empty()) {
+    const std::lock_guard lock(guard);
+    last_key = key, last = h;
   }
   return h;
 }

@@ -21,6 +21,7 @@ struct HistoryInput {
   std::int64_t width = 0, height = 0;  // the image it belongs to (default: the scene's resolution)
   Offset offset = Offset::robust;
   bool all_effects = false;
+  std::string scene_key;  // what the scene was read from (history_scene shares a scene prepared from the same)
 };
 
 // An input's "scene": a scene file relative to the data root (data_root.hpp), or a scene object;
