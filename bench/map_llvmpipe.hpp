@@ -33,17 +33,14 @@ class MapLlvmpipe {
   std::string renderer() { return gl_.renderer(); }
 
   // views: each view's matrix; slopes[v][t]: triangle t's depth slope in view v's window.
-  LpLookup draw(const pipe::Mat4<float>& eye, const std::vector<pipe::Mat4<double>>& views, const std::vector<pipe::RasterTriangle<float>>& tris,
+  LpLookup draw(const pipe::Mat4<double>& eye, const std::vector<pipe::Mat4<double>>& views, const std::vector<pipe::RasterTriangle<float>>& tris,
                 const std::vector<std::vector<double>>& slopes, int w, int h, int size, double bias, double slope, int pcf) {
     LpLookup out;
     std::vector<GLuint> tex(views.size());
     gl_.make_current();
     glGenTextures(GLsizei(tex.size()), tex.data());
-    pipe::Mat4<float> Mf;
     for (std::size_t v = 0; v < views.size(); ++v) {
-      for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) Mf[std::size_t(r)][std::size_t(c)] = float(views[v][std::size_t(r)][std::size_t(c)]);
-      gl_.eye_pass(Mf, tris, size, size);
+      gl_.eye_pass(views[v], tris, size, size);  // load_matrix rounds to float
       std::vector<std::uint32_t> z(std::size_t(size) * std::size_t(size));
       glFinish();
       glReadPixels(0, 0, size, size, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, z.data());
@@ -145,21 +142,21 @@ inline Comparison compare(MapLlvmpipe& gl, const shadowspec::MapInput& in) {
   const auto exact = shadow::shadow_map(views, in.views.cube, in.views.position, s.tris, shadowspec::map_points<Rational>(in), shadowspec::map_params<Rational>(o), none);
   const pipespec::RasterPixels eye = pipespec::raster_pixels(s, pipe::scene_raster<Rational>(s.camera, s.tris, none));
   const std::vector<pipe::RasterTriangle<float>> tris = pipespec::triangles_in<float>(s.tris);
+  auto doubled = [](const pipe::Mat4<Rational>& q) {
+    pipe::Mat4<double> d;
+    for (std::size_t r = 0; r < 4; ++r)
+      for (std::size_t c = 0; c < 4; ++c) d[r][c] = q[r][c].get_d();
+    return d;
+  };
+  std::vector<pipe::Mat4<Rational>> Mq;
   std::vector<pipe::Mat4<double>> M;
   std::vector<std::vector<double>> slopes;
   for (const auto& v : views) {
-    const pipe::Mat4<Rational> Mq = pipe::raster_matrix(v);
-    pipe::Mat4<double> Md;
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) Md[std::size_t(r)][std::size_t(c)] = Mq[std::size_t(r)][std::size_t(c)].get_d();
-    M.push_back(Md);
+    Mq.push_back(pipe::raster_matrix(v)), M.push_back(doubled(Mq.back()));
     slopes.emplace_back();
-    for (const auto& t : tris) slopes.back().push_back(triangle_slope(Md, o.size, t));
+    for (const auto& t : tris) slopes.back().push_back(triangle_slope(M.back(), o.size, t));
   }
-  const pipe::Mat4<Rational> Eq = pipe::raster_matrix(s.camera);
-  pipe::Mat4<float> E;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) E[std::size_t(r)][std::size_t(c)] = float(Eq[std::size_t(r)][std::size_t(c)].get_d());
+  const pipe::Mat4<double> E = doubled(pipe::raster_matrix(s.camera));
   const int size = int(o.size), k = o.pcf, half = k / 2;
   const LpLookup lp = gl.draw(E, M, tris, slopes, int(s.width), int(s.height), size, o.bias.get_d(), o.slope.get_d(), k);
   // Our exact maps, 24-bit integers, rows bottom up: the light's pass the lookup above made.
@@ -198,7 +195,7 @@ inline Comparison compare(MapLlvmpipe& gl, const shadowspec::MapInput& in) {
     ++c.differ, c.llvmpipe_right += lp_lit == reach;
     const std::size_t texel = std::size_t(r.j * size + r.i);
     const Vec3<Rational>& P = in.points[p].p;
-    const pipe::Vec4<Rational> h = pipe::apply(pipe::raster_matrix(views[v]), pipe::Vec4<Rational>{P.x, P.y, P.z, Rational(1)});
+    const pipe::Vec4<Rational> h = pipe::apply(Mq[v], pipe::Vec4<Rational>{P.x, P.y, P.z, Rational(1)});
     auto off_edge = [&](const Rational& ndc) {  // the distance of (ndc + 1) size / 2 from a whole number
       const Rational u = (ndc + 1) * size / 2;
       const Rational f = u - Rational(num::floor_int(u));
