@@ -13,7 +13,7 @@
 #   --full    run the whole suite at once instead (slower: the regex usually catches it sooner)
 #   --quick   skip the second phase: "missed" then means missed by the regex's tests only
 # The copy and its build live in ${TMPDIR:-/tmp}/stepwise-mutate and are reused by the next run
-# (ccache, when installed, makes reverting a mutant nearly free). The list's format is described at
+# (ccache, which it requires, makes reverting a mutant nearly free). The list's format is described at
 # the top of tests/mutants.txt.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -162,8 +162,10 @@ rm -rf "$WORK/stage"
 # The git-ignored meshes the scenes name (scripts/setup.sh extracts them into out/meshes).
 bash "$SRC/scripts/meshes.sh" "$SRC/out/meshes" >/dev/null
 
-LAUNCHER=()
-command -v ccache >/dev/null && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# ccache makes each revert a cache hit: without it, every mutant of a header included everywhere
+# costs two full rebuilds. scripts/setup.sh installs it.
+command -v ccache >/dev/null || { echo "mutate: ccache is missing; run scripts/setup.sh first" >&2; exit 2; }
+LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSW_BENCH=OFF "${LAUNCHER[@]}" >"$WORK/configure.log" 2>&1 ||
   { cat "$WORK/configure.log"; echo "mutate: configure failed" >&2; exit 2; }
 

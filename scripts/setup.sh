@@ -19,9 +19,10 @@ PACKAGES=(
   fonts-dejavu-core libcgal-demo
 )
 # The tests, their peers (POV-Ray, xvfb, Chromium, Embree, nanoflann) and the benches; clang and
-# LLVM for the sanitizer and fuzz build; `file` for CPack's .deb (its dependencies from dpkg-shlibdeps).
+# LLVM for the sanitizer and fuzz build; `file` for CPack's .deb (its dependencies from dpkg-shlibdeps);
+# ccache for scripts/mutate.sh, whose every revert would otherwise recompile what the mutant touched.
 ((APP)) || PACKAGES+=(
-  git catch2 libbenchmark-dev xvfb xauth libembree-dev libtinyobjloader-dev libnanoflann-dev
+  git ccache catch2 libbenchmark-dev xvfb xauth libembree-dev libtinyobjloader-dev libnanoflann-dev
   clang libclang-rt-14-dev llvm-14 chromium chromium-driver python3 python3-jsonschema povray file
 )
 missing=()
