@@ -2,6 +2,10 @@
 // modifiers, as the Recorder stores them and as the JSONL probe writes them; and what `check`
 // accepts as a variable's shape.
 #include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <random>
 #include <sstream>
 #include "core/jsonl_probe.hpp"
 #include "core/probe.hpp"
@@ -68,6 +72,49 @@ TEST_CASE("probe: geometry modifiers label, keep, replace and value the item jus
     j.step(1, StepKind::init).segment(Vec2<Rational>{0, 0}, Vec2<Rational>{1, 2}).label("edge").value(Rational(-3)).keep();
   }
   CHECK(Json::parse(out.str())["geo"][0] == Json::parse(R"({"segment":["0","0","1","2"],"label":"edge","value":"-3","life":"keep"})"));
+}
+
+// The JSONL probe reuses the text of recently written doubles; every number must still read back
+// as its own bits, whichever mix of repeats, evictions, signed zeros and non-finite values comes.
+template <class Num> static void check_numbers_read_back() {
+  std::mt19937_64 rng(7);
+  std::vector<Num> pool = {Num(0.0), Num(-0.0), Num(0.1), -std::numeric_limits<Num>::max(), std::numeric_limits<Num>::denorm_min(),
+                           Num(1.0 / 3.0)};
+  std::uniform_real_distribution<double> u(-1e6, 1e6);
+  for (int i = 0; i < 6; ++i) pool.push_back(Num(u(rng)));
+  std::vector<Num> written;
+  std::ostringstream out;
+  {
+    JsonlProbe<Num> j(out);
+    for (int n = 0; n < 2000; ++n) {
+      const Num a = pool[rng() % pool.size()], b = pool[rng() % pool.size()];
+      j.step(1, StepKind::visit).num("a", a).point(Vec2<Num>{a, b}).value(b);
+      written.insert(written.end(), {a, a, b, b});
+    }
+    j.step(2, StepKind::done).num("nan", Num(NAN)).num("inf", Num(INFINITY)).num("zero", Num(-0.0));
+  }
+  // Read with strtod (through sscanf), not the JSON library, which reads "-0" as the integer 0.
+  std::istringstream in(out.str());
+  std::size_t k = 0;
+  auto same_bits = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+  for (std::string line; std::getline(in, line);) {
+    double got[4];
+    if (std::sscanf(line.c_str(), R"({"step":%*d,"line":1,"kind":"visit","vars":{"a":%lf},"geo":[{"point":[%lf,%lf],"value":%lf}]})",
+                    &got[0], &got[1], &got[2], &got[3]) != 4) {
+      const Json j = Json::parse(line);
+      CHECK(j["vars"]["nan"] == "NaN");
+      CHECK(j["vars"]["inf"] == "Infinity");
+      CHECK_THAT(line, Catch::Contains(R"("zero":-0})"));
+      continue;
+    }
+    for (double g : got) REQUIRE(same_bits(g, static_cast<double>(written[k++])));
+  }
+  CHECK(k == written.size());
+}
+
+TEST_CASE("probe: JSONL numbers read back bit for bit through the probe's text reuse", "[probe]") {
+  check_numbers_read_back<double>();
+  check_numbers_read_back<float>();
 }
 
 TEST_CASE("probe: check reads colour and list variables and refuses malformed ones", "[probe][check]") {

@@ -2,6 +2,7 @@
 // filtered intervals. Algorithms only use + - * /, comparisons and the helpers in namespace num.
 #pragma once
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -222,6 +223,23 @@ template <class T> std::string json_value(const T& x) {
     if (!std::isfinite(d)) return std::isnan(d) ? "\"NaN\"" : d > 0 ? "\"Infinity\"" : "\"-Infinity\"";
     return num::to_text(x);
   }
+}
+
+// json_value(x) appended to `out`. Finite floats, doubles and integers go straight in (the
+// JSONL probe's hot path: no temporary string); everything else through json_value.
+template <class T> void append_json(std::string& out, const T& x) {
+  char buf[32];  // a double's shortest text has at most 24 characters, an int64's 20
+  if constexpr (std::is_same_v<T, std::int64_t>) {
+    out.append(buf, std::to_chars(buf, buf + sizeof buf, x).ptr);
+    return;
+  } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
+    const double d = x;  // a float as the shortest double equal to it, as to_text writes it
+    if (std::isfinite(d)) {
+      out.append(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
+      return;
+    }
+  }
+  out += json_value(x);
 }
 
 }  // namespace sw

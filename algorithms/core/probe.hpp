@@ -15,6 +15,7 @@
 #include <string_view>
 #include <type_traits>
 #include <vector>
+#include "core/column.hpp"
 #include "core/emitters.hpp"
 #include "core/number.hpp"
 #include "core/step.hpp"
@@ -133,10 +134,10 @@ class TraceView {
   }
 
  protected:
-  std::vector<StepRecord> steps_;
-  std::vector<VarRecord> vars_;
-  std::vector<GeoRecord> geos_;
-  std::vector<std::int64_t> ints_;
+  Column<StepRecord> steps_;
+  Column<VarRecord> vars_;
+  Column<GeoRecord> geos_;
+  Column<std::int64_t> ints_;
   struct Scope {
     std::string_view id;
     Listing listing;
@@ -159,10 +160,9 @@ class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num, C
   const Num& num_value(std::uint32_t s) const { return nums_[s]; }
   std::span<const Num> numbers() const { return nums_; }  // every number recorded, variables and geometry
 
-  // The recording calls are flattened: since the recorder has two push_back sites per vector
-  // (here and the summarising scratch), GCC stopped inlining push_back, and recording went from
-  // 19 to 25 ns per step (bench_probe, same run).
-  [[gnu::flatten]] Recorder& step(std::uint32_t line, StepKind kind) {
+  // The stores are Columns (column.hpp), whose push_back always inlines: with std::vector, GCC
+  // called push_back out of line for every item, a third of the cost of a step.
+  Recorder& step(std::uint32_t line, StepKind kind) {
     if constexpr (!std::is_void_v<Check>) roll();
     if (depth_ > max_depth_) [[unlikely]]
       return discarded(line, kind);
@@ -191,13 +191,13 @@ class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num, C
     scope_ = stack_.empty() ? 0 : stack_.back();
   }
   void set_max_depth(int d) { max_depth_ = d; }
-  [[gnu::flatten]] Recorder& num(const char* name, const Num& v) {
+  Recorder& num(const char* name, const Num& v) {
     vars_.push_back({name, static_cast<std::uint32_t>(nums_.size()), false, 1});
     nums_.push_back(v);
     steps_.back().var_end++;
     return *this;
   }
-  [[gnu::flatten]] Recorder& idx(const char* name, std::int64_t v) {
+  Recorder& idx(const char* name, std::int64_t v) {
     vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true, 1});
     ints_.push_back(v);
     steps_.back().var_end++;
@@ -216,14 +216,14 @@ class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num, C
     check_list(xs.size());
     vars_.push_back(
         {name, static_cast<std::uint32_t>(nums_.size()), false, static_cast<std::uint8_t>(xs.size()), VarShape::list});
-    nums_.insert(nums_.end(), xs.begin(), xs.end());
+    for (const Num& x : xs) nums_.push_back(x);
     steps_.back().var_end++;
     return *this;
   }
   Recorder& ilist(const char* name, std::span<const std::int64_t> xs) {
     check_list(xs.size());
     vars_.push_back({name, static_cast<std::uint32_t>(ints_.size()), true, static_cast<std::uint8_t>(xs.size()), VarShape::list});
-    ints_.insert(ints_.end(), xs.begin(), xs.end());
+    for (std::int64_t x : xs) ints_.push_back(x);
     steps_.back().var_end++;
     return *this;
   }
@@ -304,7 +304,7 @@ class Recorder final : public TraceView, public GeometryEmitters<Recorder<Num, C
   }
 
  private:
-  std::vector<Num> nums_;
+  RecordStore<Num> nums_;
   static void check_list(std::size_t n) {
     if (n > kMaxListLength) throw std::length_error("a list variable of more than 64 entries");
   }
