@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 #include "catalog.hpp"
+#include "scale.hpp"
 #include "curves/bezier_de_casteljau.hpp"
 #include "curves/bezier_forward_diff.hpp"
 #include "curves_bezier_oracle.hpp"
@@ -36,7 +37,7 @@ TEST_CASE("curves bezier: exact and filtered equal the oracle on 10^4 random cur
   std::mt19937_64 rng(17);
   auto u = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); };
   std::size_t uncertain = 0;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < sw::testing::cases(10000); ++i) {
     std::array<Vec2<Rational>, 4> p;
     for (auto& c : p) c = {ratio(u(-400, 400), 8), ratio(u(-400, 400), 8)};
     const std::int64_t n = u(1, 12);
@@ -50,7 +51,7 @@ TEST_CASE("curves bezier: exact and filtered equal the oracle on 10^4 random cur
     }
     if (f) REQUIRE(*f == want);
   }
-  CHECK(uncertain < 10000 / 4);  // t = k/n rounds for most n: samples near a boundary stay undecided
+  CHECK(uncertain < sw::testing::cases(10000u) / 4);  // t = k/n rounds for most n: samples near a boundary stay undecided
 }
 
 TEST_CASE("curves bezier: every value of its own steps matches its closed form and dda-line runs nested", "[curves][bezier]") {
@@ -187,7 +188,7 @@ TEST_CASE("curves bezier: de Casteljau in exact and filtered equals the oracle a
   std::mt19937_64 rng(29);
   auto u = [&](long lo, long hi) { return std::uniform_int_distribution<long>(lo, hi)(rng); };
   std::size_t uncertain = 0;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < sw::testing::cases(10000); ++i) {
     std::array<Vec2<Rational>, 4> p;
     for (auto& c : p) c = {ratio(u(-400, 400), 8), ratio(u(-400, 400), 8)};
     const int depth = int(u(0, 4));
@@ -202,7 +203,7 @@ TEST_CASE("curves bezier: de Casteljau in exact and filtered equals the oracle a
     if (f) REQUIRE(*f == want);
   }
   // Halving is exact in binary: intervals stay points unless a pixel boundary needs the exact run.
-  CHECK(uncertain < 10000 / 20);
+  CHECK(uncertain < sw::testing::cases(10000u) / 20);
 }
 
 TEST_CASE("curves bezier: every value a de Casteljau step records is the blossom of its piece", "[curves][bezier]") {

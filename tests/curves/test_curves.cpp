@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 #include "catalog.hpp"
+#include "scale.hpp"
 #include "cli_harness.hpp"
 #include "step_values.hpp"
 #include "curves/circle_interior.hpp"
@@ -68,7 +69,7 @@ TEST_CASE("curves: circles in exact, filtered and int equal the oracle on 10^4 r
   std::mt19937_64 rng(7);
   for (bool midpoint : {true, false}) {
     INFO((midpoint ? "circle-midpoint" : "circle-interior"));
-    for (int i = 0; i < 10000; ++i) {
+    for (int i = 0; i < sw::testing::cases(10000); ++i) {
       const auto u = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
       const curves::CircleInput c{u(-100000, 100000), u(-100000, 100000), i < 200 ? i : u(0, i % 10 == 0 ? 3000 : 120)};
       INFO("c = (" << c.cx << ", " << c.cy << "), r = " << c.r);
@@ -89,7 +90,7 @@ TEST_CASE("curves: cubics in exact and filtered equal the oracle on 10^4 random 
   std::size_t uncertain = 0;
   for (bool forward : {true, false}) {
     INFO((forward ? "poly-forward-diff" : "poly-horner"));
-    for (int i = 0; i < 10000; ++i) {
+    for (int i = 0; i < sw::testing::cases(10000); ++i) {
       const auto u = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
       // Small dyadic and odd-denominator coefficients: both give y exactly on half-integers.
       const int den = i % 2 ? 64 : 3 * (1 + i % 5);
@@ -108,7 +109,7 @@ TEST_CASE("curves: cubics in exact and filtered equal the oracle on 10^4 random 
       if (filtered) REQUIRE(*filtered == want);
     }
   }
-  CHECK(uncertain < 20000 / 2);  // the filter decides most cases by itself
+  CHECK(uncertain < 2 * sw::testing::cases(10000u) / 2);  // the filter decides most cases by itself
 }
 
 TEST_CASE("curves: the catalog's filtered and exact modes match the oracle through the adapter", "[curves][oracle]") {

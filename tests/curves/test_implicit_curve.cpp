@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 #include "cli_harness.hpp"
+#include "scale.hpp"
 #include "implicit_support.hpp"
 
 using namespace sw;
@@ -15,7 +16,7 @@ TEST_CASE("implicit-curve: exact and filtered equal the oracle on 10^4 random cu
   std::mt19937_64 rng(17);
   std::size_t uncertain = 0;
   std::map<std::string, int> reasons;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < sw::testing::cases(10000); ++i) {
     const Case k = random_case(rng, i);
     INFO("case " << i << " start (" << k.start.x << ", " << k.start.y << ") max_steps " << k.max_steps);
     const Walk want = oracle_walk(k);
@@ -30,8 +31,8 @@ TEST_CASE("implicit-curve: exact and filtered equal the oracle on 10^4 random cu
     }
     if (filtered) REQUIRE(*filtered == want);
   }
-  CHECK(uncertain < 10000 / 4);  // at most the thirds' cases (one in 4)
-  for (const char* r : {"closed", "max_steps", "singular", "revisit"}) CHECK(reasons[r] > 20);  // every stop is exercised
+  CHECK(uncertain < sw::testing::cases(10000u) / 4);  // at most the thirds' cases (one in 4)
+  for (const char* r : {"closed", "max_steps", "singular", "revisit"}) CHECK(reasons[r] > sw::testing::cases(20));  // every stop is exercised
 }
 
 TEST_CASE("implicit-curve: x^2 + y^2 = r^2 from its leftmost pixel plots circle-midpoint's set and closes for r = 1..300",

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include "cli_harness.hpp"
+#include "scale.hpp"
 #include "clip_cases.hpp"
 #include "fill/sutherland_hodgman.hpp"
 #include "step_values.hpp"
@@ -117,7 +118,7 @@ int probe_regions(SmallRng& g, const PolygonCase& c, const Polygon2& got, int pr
 TEST_CASE("fill clip: sutherland-hodgman in exact and filtered equals the oracle as a region on 10^4 random polygons", "[fill][clip]") {
   SmallRng g{std::mt19937_64(53)};
   std::size_t uncertain = 0, empty = 0, probes = 0;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < sw::testing::cases(10000); ++i) {
     const PolygonCase c = random_case(g, i % 2 == 0);
     INFO("case " << i);
     const Polygon2 exact = run<Q>(c.subject, c.clip);
@@ -139,9 +140,9 @@ TEST_CASE("fill clip: sutherland-hodgman in exact and filtered equals the oracle
       ++uncertain;  // a vertex on a clip line: the chain runs exact
     }
   }
-  CHECK(empty > 100);
-  CHECK(probes > 5000);
-  CHECK(uncertain < 10000 / 2);
+  CHECK(empty > sw::testing::cases(100u));
+  CHECK(probes > sw::testing::cases(5000u));
+  CHECK(uncertain < sw::testing::cases(10000u) / 2);
   WARN("sutherland-hodgman random: " << empty << " empty, " << probes << " probe points, filtered uncertain " << uncertain);
 }
 

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <optional>
 #include "cli_harness.hpp"
+#include "scale.hpp"
 #include "clip_cases.hpp"
 #include "fill/cohen_sutherland.hpp"
 #include "step_values.hpp"
@@ -66,7 +67,7 @@ SegmentCase random_segment_case(SmallRng& g, bool small) {
 TEST_CASE("fill clip: cohen-sutherland in exact and filtered equals the oracle on 10^4 random segments", "[fill][clip]") {
   SmallRng g{std::mt19937_64(41)};
   std::size_t uncertain = 0, accepted = 0, degenerate = 0;
-  for (int i = 0; i < 10000; ++i) {
+  for (int i = 0; i < sw::testing::cases(10000); ++i) {
     const SegmentCase c = random_segment_case(g, i % 2 == 0);
     INFO("case " << i << ": " << c.p0.x << "," << c.p0.y << " -> " << c.p1.x << "," << c.p1.y << " window " << c.lo.x << "," << c.lo.y << " "
                   << c.hi.x << "," << c.hi.y);
@@ -93,9 +94,9 @@ TEST_CASE("fill clip: cohen-sutherland in exact and filtered equals the oracle o
       ++uncertain;  // an end on a boundary line after a rounded cut: the chain runs exact
     }
   }
-  CHECK(accepted > 2000);
-  CHECK(degenerate > 50);      // corner touches and points
-  CHECK(uncertain < 10000 / 4);
+  CHECK(accepted > sw::testing::cases(2000u));
+  CHECK(degenerate > sw::testing::cases(50u));      // corner touches and points
+  CHECK(uncertain < sw::testing::cases(10000u) / 4);
   WARN("cohen-sutherland random: " << accepted << " accepted, " << degenerate << " single points, filtered uncertain " << uncertain);
 }
 

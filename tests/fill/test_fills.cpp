@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include "catalog.hpp"
+#include "scale.hpp"
 #include "cli_harness.hpp"
 #include "core/interval.hpp"
 #include "fill/fill_run.hpp"
@@ -52,7 +53,7 @@ TEST_CASE("fill oracle: hand-worked triangles follow the rule on edges", "[fill]
 TEST_CASE("fill: triangle-dda, triangle-edge and scanline-polygon in exact, filtered and int equal the oracle on 10^4 random triangles", "[fill][oracle]") {
   std::mt19937_64 rng(2026);
   std::size_t uncertain = 0, covered = 0;
-  for (int n = 0; n < 10000; ++n) {
+  for (int n = 0; n < sw::testing::cases(10000); ++n) {
     const long den = n % 3 == 0 ? 1 : n % 3 == 1 ? 4 : 256;  // vertices on samples, on quarter points, on llvmpipe's grid
     const Tri t = random_triangle(rng, n % 10 == 0 ? 40 : 8, den);
     const auto want = oracle::triangle_samples(t);
@@ -67,8 +68,8 @@ TEST_CASE("fill: triangle-dda, triangle-edge and scanline-polygon in exact, filt
     if (auto f = filtered([&] { return run_edge<Interval>(t); }, uncertain)) REQUIRE(*f == want);
     if (auto f = filtered([&] { return run_scanline<Interval>({{t[0], t[1], t[2]}}, fill::WindingRule::even_odd); }, uncertain)) REQUIRE(*f == want);
   }
-  CHECK(covered > 100000);  // the set is not mostly empty triangles
-  CHECK(uncertain < 3 * 10000 / 2);  // vertices on samples make exact ties: those fall back to exact
+  CHECK(covered > sw::testing::cases(100000u));  // the set is not mostly empty triangles
+  CHECK(uncertain < 3 * sw::testing::cases(10000u) / 2);  // vertices on samples make exact ties: those fall back to exact
 }
 
 TEST_CASE("fill: triangles with rational vertices (thirds) and coordinates near 10^9 equal the oracle", "[fill][oracle]") {

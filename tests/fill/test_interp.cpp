@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include "catalog.hpp"
+#include "scale.hpp"
 #include "cli_harness.hpp"
 #include "core/interval.hpp"
 #include "fill/interp_run.hpp"
@@ -47,7 +48,7 @@ std::string describe(const ClipTri& t) {
 TEST_CASE("interp: perspective-interp and affine-interp in exact and filtered equal the oracle on 10^4 random clip-space triangles", "[fill][interp][oracle]") {
   std::mt19937_64 rng(41);
   std::size_t uncertain = 0, clipped = 0, empty = 0;
-  for (int i = 0; i < 10000; ++i) {  // 10^4 triangles, each through both algorithms
+  for (int i = 0; i < sw::testing::cases(10000); ++i) {  // 10^4 triangles, each through both algorithms
     const ClipTri t = random_clip_tri(rng, 1 + i % 3);
     INFO(describe(t));
     check_against_oracle<true>(t, uncertain);
@@ -56,9 +57,9 @@ TEST_CASE("interp: perspective-interp and affine-interp in exact and filtered eq
     clipped += poly.corners.size() == 4;
     empty += poly.corners.empty();
   }
-  CHECK(clipped > 500);  // the set exercises the clipping: quadrilaterals, and nothing kept
-  CHECK(empty > 200);
-  CHECK(uncertain < 10000);  // edges exactly through samples on this grid: intervals cannot call those ties
+  CHECK(clipped > sw::testing::cases(500u));  // the set exercises the clipping: quadrilaterals, and nothing kept
+  CHECK(empty > sw::testing::cases(200u));
+  CHECK(uncertain < sw::testing::cases(10000u));  // edges exactly through samples on this grid: intervals cannot call those ties
 }
 
 TEST_CASE("interp: where w is the same at every vertex, perspective equals affine exactly", "[fill][interp][oracle]") {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <sys/wait.h>
 #include "catalog.hpp"
+#include "scale.hpp"
 #include "ray_test_support.hpp"
 #include "rays/cases.hpp"
 #include "rays_oracle.hpp"
@@ -152,7 +153,7 @@ TEST_CASE("rays: tessellated grid, rays through every shared edge and vertex", "
 // Random float cases: the filtered variant (exact fallback included) and the exact variant equal
 // the oracle's hit; exact also its t (and b).
 TEST_CASE("rays: seeded random cases against the oracle", "[rays]") {
-  constexpr int kFiltered = 100000, kExact = 100000;
+  constexpr int kFiltered = sw::testing::cases(100000), kExact = kFiltered;
   std::mt19937_64 rng(42);
   auto u = [&](double lo, double hi) { return float(std::uniform_real_distribution<double>(lo, hi)(rng)); };
   auto fv = [&](double lo, double hi) { return std::array<float, 3>{u(lo, hi), u(lo, hi), u(lo, hi)}; };

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include "cli_harness.hpp"
+#include "scale.hpp"
 #include "scene_gen.hpp"
 #include "tracer/plan.hpp"
 #include "tracer/render.hpp"
@@ -63,7 +64,7 @@ TEST_CASE("planned renders are byte-identical to all-effects renders on the exam
 
 TEST_CASE("planned renders are byte-identical to all-effects renders on 200 generated scenes", "[tracer][planner]") {
   int fewer = 0, shadows_off = 0;
-  for (std::uint32_t seed = 1; seed <= 200; ++seed) {
+  for (std::uint32_t seed = 1; seed <= sw::testing::cases(200u); ++seed) {
     const tracer::Scene s = scene_of(testing::random_scene(seed, 20, 15));
     const auto planned = render(s, false, 20, 15), all = render(s, true, 20, 15);
     INFO("seed " << seed);
@@ -72,8 +73,8 @@ TEST_CASE("planned renders are byte-identical to all-effects renders on 200 gene
     fewer += planned.counts.total() < all.counts.total();
     for (const tracer::Decision& d : planned.plan.decisions) shadows_off += d.effect == "shadows" && !d.on;
   }
-  CHECK(fewer >= 100);      // 122 at this writing: max_depth 1 and shadow-casting scenes save nothing
-  CHECK(shadows_off >= 10); // and the shadow proof succeeds on some sparse ones
+  CHECK(fewer >= sw::testing::cases(100));  // 122 of 200 at this writing: max_depth 1 and shadow-casting scenes save nothing
+  CHECK(shadows_off >= sw::testing::cases(10));  // and the shadow proof succeeds on some sparse ones
 }
 
 TEST_CASE("the planner turns shadows off only with a proof", "[tracer][planner]") {
