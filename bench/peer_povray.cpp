@@ -161,6 +161,7 @@ Row compare(const std::string& name, const tracer::Scene& s, const fs::path& wor
   ro.spp = 1, ro.threads = 1;
   tracer::Scene one = s;  // one ray through each pixel centre, as POV-Ray without antialiasing
   one.sampling = tracer::Sampling{};
+  one.photons.count = 0;  // the export maps no photons: POV-Ray's image has no caustics, so neither has ours
   const tracer::RenderResult r = tracer::render(one, ro);
   const std::vector<std::uint8_t> ours = tracer::to_rgb8(r);
   write_png(base.string() + "-ours.png", ours.data(), static_cast<int>(w), static_cast<int>(h), 3);

@@ -2,7 +2,8 @@
 // every object is tested in id order with the rays family's test for its kind (spheres: the stable
 // test; planes; boxes: the slab test; triangles: the watertight test; meshes: their BVH through
 // bvh-traverse), each as a nested listing. Ties keep the lower object id. A shadow ray asks for
-// any hit with t < t_max. Semantics: docs/tracer/renderer.md.
+// any hit with t < t_max. Untraced, a scene with an index (index_objects) is searched through a
+// BVH over its objects, with the same tests and the same answer. Semantics: docs/tracer/renderer.md.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -66,9 +67,19 @@ struct Leaving {
   std::int32_t prim = -1;
 };
 
+// The untraced renderer's index over the objects (index_objects): a BVH over the boxes of the
+// bounded objects, each padded so that rounding in the object's own test cannot put a hit outside
+// it; planes are unbounded and tested one by one. Empty: scene_hit tests every object in order.
+template <class Num> struct ObjectIndex {
+  spatial::Bvh<Num> bvh;                 // its "triangle" i is object bounded[i]
+  std::vector<std::int32_t> bounded;     // in id order
+  std::vector<std::int32_t> unbounded;  // the planes (and any empty mesh), in id order
+};
+
 template <class Num> struct TraceObjects {
   std::vector<Prim<Num>> objects;
   std::vector<MeshData<Num>> meshes;
+  ObjectIndex<Num> index;  // optional: only the untraced path reads it
 };
 
 // One object's test: hit and t (> 0), with the triangle and its weights for meshes. The callee's
@@ -118,11 +129,111 @@ Hit<Num> object_hit(const TraceObjects<Num>& s, int k, const ray::Ray3<Num>& r, 
   return h;
 }
 
+// Builds s.index over s.objects (their meshes' BVHs built). Each bounded object's padded box goes
+// to bvh-build as the flat "triangle" (lo, hi, lo), whose vertex box is the box itself. The pad,
+// 10^-6 of the box's largest coordinate or extent, is far beyond the rounding of any object test.
+template <class Num> void index_objects(TraceObjects<Num>& s) {
+  ObjectIndex<Num> ix;
+  std::vector<Triangle3<Num>> boxes;
+  for (std::size_t k = 0; k < s.objects.size(); ++k) {  // bounded by the object count
+    const Prim<Num>& o = s.objects[k];
+    spatial::Box<Num, 3> b;
+    const bool no_box =
+        o.shape == Shape::plane || (o.shape == Shape::mesh && s.meshes[static_cast<std::size_t>(o.mesh)].bvh.nodes.empty());
+    if (no_box) {
+      ix.unbounded.push_back(static_cast<std::int32_t>(k));
+      continue;
+    }
+    switch (o.shape) {
+      case Shape::plane: break;
+      case Shape::sphere: {
+        const Num r = o.radius < Num(0) ? Num(-o.radius) : o.radius;
+        b = {Vec3<Num>{o.a.x - r, o.a.y - r, o.a.z - r}, Vec3<Num>{o.a.x + r, o.a.y + r, o.a.z + r}};
+        break;
+      }
+      case Shape::box: b = spatial::Box<Num, 3>::at(o.a), b.grow(o.b); break;
+      case Shape::triangle: b = spatial::Box<Num, 3>::at(o.v[0]), b.grow(o.v[1]), b.grow(o.v[2]); break;
+      case Shape::mesh: b = s.meshes[static_cast<std::size_t>(o.mesh)].bvh.nodes[0].box; break;
+    }
+    Num size(0);
+    for (int a = 0; a < 3; ++a)
+      for (const Num& c : {b.lo[a], b.hi[a], Num(b.hi[a] - b.lo[a])})
+        if (const Num m = c < Num(0) ? Num(-c) : c; size < m) size = m;
+    const Num pad = Num(1e-6) * size + Num(1e-300);
+    for (int a = 0; a < 3; ++a) b.lo[a] = b.lo[a] - pad, b.hi[a] = b.hi[a] + pad;
+    boxes.push_back({b.lo, b.hi, b.lo});
+    ix.bounded.push_back(static_cast<std::int32_t>(k));
+  }
+  if (!boxes.empty()) {
+    NoProbe none;
+    ix.bvh = spatial::bvh_build<Num>(boxes, none);
+  }
+  s.index = std::move(ix);
+}
+
+namespace scene_detail {
+// scene_hit through s.index, untraced: the same object tests, and the same answer as the loop in id
+// order. Closest: the least (t, id) over the objects hit; a node is pruned only when its entry t is
+// beyond the best t, and its padded boxes hold every hit of theirs. Any: some hit with t < t_max.
+template <NumberType Num> Hit<Num> indexed_hit(const TraceObjects<Num>& s, const ray::Ray3<Num>& r, bool any, const Num& t_max,
+                                               const Leaving& leaving) {
+  NoProbe none;
+  Hit<Num> best;
+  // True when the search may stop: an any-hit query found its hit.
+  auto test = [&](std::int32_t k) {
+    const bool mine = k == leaving.object;
+    const Shape shape = s.objects[static_cast<std::size_t>(k)].shape;
+    if (mine && (shape == Shape::plane || shape == Shape::triangle)) return false;
+    const spatial::BvhQuery<Num> q{any, t_max, mine && shape == Shape::mesh ? leaving.prim : -1};
+    const Hit<Num> h = object_hit(s, k, r, q, none);
+    if (!h.hit) return false;
+    if (any) {
+      if (!(h.t < t_max)) return false;
+      best = h;
+      return true;
+    }
+    if (!best.hit || h.t < best.t || (!(best.t < h.t) && k < best.object)) best = h;
+    return false;
+  };
+  for (const std::int32_t k : s.index.unbounded)
+    if (test(k)) return best;
+  const spatial::Bvh<Num>& bvh = s.index.bvh;
+  if (bvh.nodes.empty()) return best;
+  auto box = [&](std::int32_t n) { return ray::ray_box<Num>(r, bvh.nodes[n].box.lo, bvh.nodes[n].box.hi, none); };
+  spatial::bvh_detail::Stack<Num> stack;
+  if (const auto h = box(0); h.hit) stack.push_back({0, h.t_near});
+  while (!stack.empty()) {  // bounded: every node is pushed at most once
+    const spatial::bvh_detail::Entry<Num> e = stack.back();
+    stack.pop_back();
+    if (any ? !(e.t < t_max) : best.hit && best.t < e.t) continue;
+    const spatial::BvhNode<Num>& nd = bvh.nodes[e.node];
+    if (nd.left < 0) {
+      for (std::int32_t j = nd.first; j < nd.first + nd.count; ++j)
+        if (test(s.index.bounded[bvh.order[j]])) return best;
+      continue;
+    }
+    const auto hl = box(nd.left), hr = box(nd.right);
+    const bool right_first = hl.hit && hr.hit && hr.t_near < hl.t_near;
+    if (hl.hit && !right_first) {
+      if (hr.hit) stack.push_back({nd.right, hr.t_near});
+      stack.push_back({nd.left, hl.t_near});
+    } else {
+      if (hl.hit) stack.push_back({nd.left, hl.t_near});
+      if (hr.hit) stack.push_back({nd.right, hr.t_near});
+    }
+  }
+  return best;
+}
+}  // namespace scene_detail
+
 // The closest hit (any = false), or the first hit found with t < t_max (any = true).
 template <NumberType Num, StepProbe Probe = NoProbe> Hit<Num> scene_hit(const TraceObjects<Num>& s, const ray::Ray3<Num>& r,
                                                                         bool any, const Num& t_max, const Leaving& leaving,
                                                                         Probe& probe) {
   using L = SceneHit;
+  if constexpr (!Probe::on) {
+    if (!s.index.bvh.nodes.empty() || !s.index.unbounded.empty()) return scene_detail::indexed_hit(s, r, any, t_max, leaving);
+  }
   Hit<Num> best;
   if constexpr (Probe::on)
     probe.step(L::start, StepKind::init).ray(r.o, r.d).keep().idx("objects", std::int64_t(s.objects.size()));

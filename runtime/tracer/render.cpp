@@ -68,6 +68,7 @@ TraceScene<double> trace_scene(const Scene& s, std::int64_t width, std::int64_t 
     }
     t.objects.push_back(p);
   }
+  index_objects(t);
   std::map<std::string, TraceTexture> decoded;
   for (const Texture& x : s.textures) t.textures.push_back(convert_texture(x, decoded));
   lighting::ShadeScene<Rational> lights;  // the lighting family's conversion of lights and materials

@@ -3,10 +3,14 @@
 //    near-critical rays, where a plain double evaluation errs on some;
 //  - the guide's test misses TIR where the exact one finds it (a hand-derived angle);
 //  - Snell's law and Fresnel at normal incidence, from the formulas by hand;
-//  - a glass ball over a floor focuses the photons below it.
+//  - a glass ball over a floor focuses the photons below it;
+//  - the photon tree gathers exactly what a scan of every photon gathers.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
+#include "scale.hpp"
 #include "tracer/photon_trace.hpp"
 #include "tracer/render.hpp"
 
@@ -127,4 +131,49 @@ TEST_CASE("caustic irradiance: the photons within a closed radius over the disc'
   // Farther than the radius from every photon: nothing.
   map.gather = 64;
   CHECK(tracer::caustic_irradiance(map, {0, -5, 0}).z == 0);
+}
+
+TEST_CASE("caustic irradiance: the photon tree gathers what a scan of every photon gathers, bit for bit", "[tracer][caustics]") {
+  // Photons on a lattice (many equal distances, so the (d2, id) tie rule decides which are taken),
+  // duplicates at one point (a leaf that cannot split) and a random cloud; queries on and off them.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  tracer::PhotonMap map;
+  for (int x = 0; x < 12; ++x)
+    for (int z = 0; z < 12; ++z) map.at.push_back({x / 8.0, 0, z / 8.0});
+  for (int k = 0; k < 40; ++k) map.at.push_back({0.5, 0, 0.5});
+  for (int k = 0; k < 3000; ++k) map.at.push_back({u(rng), u(rng) / 4, u(rng)});
+  for (std::size_t i = 0; i < map.at.size(); ++i) map.power.push_back({1.0 + i % 7, 0.5, 1.0 / (1 + i % 3)});
+  tracer::index_photons(map);
+  const std::size_t queries = sw::testing::cases(600u);
+  std::size_t nonzero = 0;
+  for (const std::int64_t gather : {1, 8, 64}) {
+    map.gather = gather;
+    map.radius = gather == 8 ? 0.25 : 0.125;
+    for (std::size_t q = 0; q < queries; ++q) {
+      const Vec3<double> p = q % 3 == 0 ? map.at[q % map.at.size()] : Vec3<double>{u(rng), u(rng) / 4, u(rng)};
+      // The scan: every photon within the radius by (d2, id), the first `gather`, summed in that order.
+      std::vector<std::pair<double, std::size_t>> near;
+      for (std::size_t i = 0; i < map.at.size(); ++i) {
+        const Vec3<double> d = map.at[i] - p;
+        const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+        if (d2 <= map.radius * map.radius) near.push_back({d2, i});
+      }
+      std::sort(near.begin(), near.end());
+      if (near.size() > static_cast<std::size_t>(gather)) near.resize(static_cast<std::size_t>(gather));
+      Vec3<double> sum{};
+      for (const auto& [d2, i] : near) sum = sum + map.power[i];
+      const double r2 = near.size() == static_cast<std::size_t>(gather) && near.back().first > 0 ? near.back().first
+                                                                                                    : map.radius * map.radius;
+      const Vec3<double> want = near.empty() ? Vec3<double>{} : (1 / (3.141592653589793 * r2)) * sum;
+      const Vec3<double> got = tracer::caustic_irradiance(map, p);
+      INFO("gather " << gather << " query " << q);
+      REQUIRE(got.x == want.x);
+      REQUIRE(got.y == want.y);
+      REQUIRE(got.z == want.z);
+      nonzero += !near.empty();
+    }
+  }
+  CHECK(nonzero > queries);  // most queries gathered something
+  CHECK(map.tree.leaves > map.at.size() / 8 / 2);
 }
