@@ -1,6 +1,6 @@
 // The caustic photon map: the photons stored on diffuse surfaces (photon_trace.hpp) in a balanced
-// kd-tree searched by kd-nearest, and the irradiance the tracer adds there: the k nearest within r, sum(power) /
-// (pi r^2) (Jensen). Semantics and units: docs/tracer/renderer.md#caustics.
+// kd-tree searched by kd-nearest, and the irradiance the tracer adds there: the k nearest within
+// r, sum(power) / (pi r^2) (Jensen). Semantics and units: docs/tracer/renderer.md#caustics.
 #pragma once
 #include <algorithm>
 #include <cstdint>
