@@ -20,19 +20,20 @@ namespace sw::lighting {
   X(horizon, "lit <- N.L > 0; seen <- N.E > 0          -- exact signs of the raw dot products") \
   X(below, "if not (lit and seen): term <- 0; stop    -- light or eye behind the surface")
 
-// sign(a.b) of the raw vectors, exactly (num::exact_sign).
-template <class Num> int sign_dot(const Vec3<Num>& a, const Vec3<Num>& b) {
-  return num::exact_sign([](const auto& x, const auto& y) { return dot(x, y); }, a, b);
-}
+// The polynomials of the frame's exact decisions, generic over the number type (core/exact_sign.hpp
+// evaluates them on its filter stages and in rationals).
+// a.b
+inline constexpr auto dot_polynomial = [](const auto& a, const auto& b) { return dot(a, b); };
+// 2 (N.L)(N.E) - (N.N)(L.E): |N|^2 |L| |E| times r.e, with r the mirror of l about n.
+inline constexpr auto mirror_polynomial = [](const auto& N, const auto& L, const auto& E) {
+  using T = std::decay_t<decltype(N.x)>;
+  return T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E);
+};
 
-// sign(2 (N.L)(N.E) - (N.N)(L.E)): |N|^2 |L| |E| times r.e, with r the mirror of l about n.
+// sign(a.b) and the mirror side of the raw vectors, exactly (num::exact_sign).
+template <class Num> int sign_dot(const Vec3<Num>& a, const Vec3<Num>& b) { return num::exact_sign(dot_polynomial, a, b); }
 template <class Num> int sign_mirror(const Vec3<Num>& n, const Vec3<Num>& l, const Vec3<Num>& e) {
-  return num::exact_sign(
-      [](const auto& N, const auto& L, const auto& E) {
-        using T = std::decay_t<decltype(N.x)>;
-        return T(2) * dot(N, L) * dot(N, E) - dot(N, N) * dot(L, E);
-      },
-      n, l, e);
+  return num::exact_sign(mirror_polynomial, n, l, e);
 }
 
 // v / |v| (v != 0; a float v whose square underflows gives Inf or NaN components: a float failure

@@ -125,6 +125,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
   out.ambient = m.emission + times(s.scene_ambient, m.ka);
   out.rgb = out.ambient;
   if constexpr (Probe::on) probe.step(L::ambient, StepKind::init).colour("c", out.rgb);
+  out.lights.reserve(s.lights.size());
   for (std::size_t i = 0; i < s.lights.size(); ++i) {
     const Light<Num>& li = s.lights[i];
     LightTerms<Num> t;
@@ -172,7 +173,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> Shaded<Num> shade(const Sha
             .label("S");
     }
     if (t.lit && !t.blocked) {
-      const FrameSigns sg = frame_signs(s.n, to_light, to_eye);
+      const FrameSigns sg{t.lit, out.facing_eye, sign_mirror(s.n, to_light, to_eye) > 0};  // lit and facing: decided above
       const Frame<Num> f{n, l, e, dot(n, l), dot(n, e), sg.lit, sg.seen, sg.mirror};
       if (s.convention == Convention::gl) {
         t.diffuse = Num(0) < f.nl ? f.nl : Num(0);

@@ -37,6 +37,13 @@ struct Refract {
 #undef SW_TRACER_REFRACT
 };
 
+// n1^2 (|D|^2 |M|^2 - (D.M)^2) - n2^2 |D|^2 |M|^2: |D|^2 |M|^2 n2^2 (sin^2(t) - 1), so TIR is its
+// sign >= 0 (core/exact_sign.hpp decides it exactly).
+inline constexpr auto tir_polynomial = [](const auto& D, const auto& M, const auto& m1, const auto& m2) {
+  const auto dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
+  return m1 * m1 * (dd * mm - dm * dm) - m2 * m2 * dd * mm;
+};
+
 // d: the incoming direction; N: the normal facing it (d.N < 0); n1, n2 >= 1.
 template <NumberType Num, StepProbe Probe = NoProbe> Transmission<Num> refract(const Vec3<Num>& d, const Vec3<Num>& N,
                                                                                const Num& n1, const Num& n2,
@@ -47,12 +54,7 @@ template <NumberType Num, StepProbe Probe = NoProbe> Transmission<Num> refract(c
   out.cos_i = -dot(dn, nn);
   const Num c = out.cos_i < Num(0) ? Num(0) : out.cos_i > Num(1) ? Num(1) : out.cos_i;
   if constexpr (Probe::on) probe.step(L::cosine, StepKind::init).num("c", c).ray(Vec3<Num>{}, dn).label("d");
-  out.tir = num::exact_sign(
-                [](const auto& D, const auto& M, const auto& m1, const auto& m2) {
-                  const auto dd = dot(D, D), mm = dot(M, M), dm = dot(D, M);
-                  return m1 * m1 * (dd * mm - dm * dm) - m2 * m2 * dd * mm;
-                },
-                d, N, n1, n2) >= 0;
+  out.tir = num::exact_sign(tir_polynomial, d, N, n1, n2) >= 0;
   const Num eta = n1 / n2;
   out.guide_tir = eta * std::sqrt(std::max(Num(0), Num(1) - c)) >= Num(1);
   if constexpr (Probe::on)
