@@ -9,6 +9,7 @@
 #include <map>
 #include "spatial/kd_common.hpp"
 #include "spatial/kd_nearest.hpp"
+#include "spatial/kd_point_tree.hpp"
 #include "spatial_oracle.hpp"
 #if __has_include(<nanoflann.hpp>)
 #include <nanoflann.hpp>
@@ -82,7 +83,8 @@ constexpr std::size_t kPoints = 100000, kQueries = 10000, kK = 8;
 
 template <int D> struct NearestSet {
   std::vector<VecN<double, D>> pts, qs;
-  KdTree<double, D> tree;
+  KdTree<double, D> tree;    // kd-build's (the catalog's kd-nearest)
+  KdTree<double, D> median;  // kd_point_tree's, 8 points a leaf (the photon map's)
   NearestSet() {
     const auto p = kdspec::random_points_for(9001, kPoints), q = kdspec::random_points_for(9002, kQueries);
     auto snap = [](double x, bool grid) { return grid ? std::round(x * 16) / 16 : x; };
@@ -100,6 +102,7 @@ template <int D> struct NearestSet {
     for (const auto& v : pts) b.push_back(Box<double, D>::at(v));
     NoProbe none;
     tree = kd_build<double, D>(b, true, none);
+    median = kd_point_tree<double, D>(pts, 8);
   }
 };
 template <int D> const NearestSet<D>& nearest_set() {
@@ -107,18 +110,22 @@ template <int D> const NearestSet<D>& nearest_set() {
   return s;
 }
 
-template <int D> void BM_KdNearestOurs(benchmark::State& state) {
+// Our search on kd-build's tree (the catalog's) or on the median tree (kd_point_tree, the photon
+// map's): the same answers, a shallower tree.
+template <int D, bool Median> void BM_KdNearestOurs(benchmark::State& state) {
   const auto& s = nearest_set<D>();
   NoProbe none;
   std::size_t i = 0;
   for (auto _ : state) {
-    const auto r = kd_nearest_tree<double, D>(s.tree, s.pts, s.qs[i++ % kQueries], kK, none);
+    const auto r = kd_nearest_tree<double, D>(Median ? s.median : s.tree, s.pts, s.qs[i++ % kQueries], kK, none);
     benchmark::DoNotOptimize(r.ids.data());
   }
   state.counters["queries/s"] = benchmark::Counter(1, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_KdNearestOurs<2>);
-BENCHMARK(BM_KdNearestOurs<3>);
+BENCHMARK(BM_KdNearestOurs<2, false>)->Name("BM_KdNearestOurs<2>");
+BENCHMARK(BM_KdNearestOurs<3, false>)->Name("BM_KdNearestOurs<3>");
+BENCHMARK(BM_KdNearestOurs<2, true>)->Name("BM_KdNearestOursMedianTree<2>");
+BENCHMARK(BM_KdNearestOurs<3, true>)->Name("BM_KdNearestOursMedianTree<3>");
 
 #ifdef SW_HAVE_NANOFLANN
 template <int D> struct Cloud {
@@ -162,7 +169,7 @@ template <int D> void classify() {
   const auto& s = nearest_set<D>();
   const auto& f = flann_set<D>();
   NoProbe none;
-  std::size_t differ = 0, ours_wrong = 0, flann_wrong = 0, ties = 0, checked = 0;
+  std::size_t differ = 0, ours_wrong = 0, flann_wrong = 0, ties = 0, checked = 0, trees_differ = 0;
   std::vector<VecN<Rational, D>> exact;
   for (const auto& p : s.pts) {
     VecN<Rational, D> v;
@@ -172,6 +179,8 @@ template <int D> void classify() {
   for (std::size_t i = 0; i < kQueries; ++i) {
     const auto& q = s.qs[i];
     const auto ours = kd_nearest_tree<double, D>(s.tree, s.pts, q, kK, none);
+    const auto on_median = kd_nearest_tree<double, D>(s.median, s.pts, q, kK, none);
+    trees_differ += on_median.ids != ours.ids || on_median.d2 != ours.d2;
     std::array<std::uint32_t, kK> ids;
     std::array<double, kK> d2;
     const double qq[3] = {q[0], q[1], D > 2 ? q[D - 1] : 0.0};
@@ -205,6 +214,8 @@ template <int D> void classify() {
   std::printf("kd-nearest %dD, %zu points, %zu queries, k = %zu: id lists differ from nanoflann's on %zu; of the first %zu of those, "
               "ours wrong %zu, nanoflann's distances wrong %zu, ties (same distances, other ids or order) %zu\n",
               D, kPoints, kQueries, kK, differ, checked, ours_wrong, flann_wrong, ties);
+  std::printf("kd-nearest %dD: answers on kd-build's tree (depth %zu) and the median tree (depth %zu) differ on %zu queries\n", D,
+              s.tree.depth, s.median.depth, trees_differ);
 }
 #endif
 

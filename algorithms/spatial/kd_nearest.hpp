@@ -68,6 +68,7 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
   // (d2, id) order; the heap's front is the largest held.
   auto less = [](const Held& a, const Held& b) { return a.first < b.first || (!(b.first < a.first) && a.second < b.second); };
   std::vector<Held> heap;
+  heap.reserve(k);
   struct Entry {
     std::int32_t node;
     Num d2;
@@ -78,7 +79,9 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
     s.ilist("stack", ids);
   };
   KdNearestResult<Num> out;
-  std::vector<Entry> stack{{0, kd_cell_d2<Num, D>(tree.nodes[0].cell, q)}};
+  std::vector<Entry> stack;
+  stack.reserve(tree.depth + 2);  // depth first, two pushed a level: at most depth + 2 held
+  stack.push_back({0, kd_cell_d2<Num, D>(tree.nodes[0].cell, q)});
   if constexpr (Probe::on) probe.step(L::push, StepKind::init).idx("node", 0).num("d2_cell", stack[0].d2);
   // Bounded: each node is pushed at most once.
   while (!stack.empty()) {
@@ -130,6 +133,7 @@ KdNearestResult<Num> kd_nearest_tree(const KdTree<Num, D>& tree, const std::vect
     }
   }
   std::sort_heap(heap.begin(), heap.end(), less);
+  out.ids.reserve(heap.size()), out.d2.reserve(heap.size());
   for (const Held& h : heap) out.ids.push_back(h.second), out.d2.push_back(h.first);
   if constexpr (Probe::on) {
     auto& s = probe.step(L::done, StepKind::done).idx("held", static_cast<std::int64_t>(heap.size()));

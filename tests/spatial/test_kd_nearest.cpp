@@ -3,6 +3,7 @@
 // to N on a small set. Filtered and exact: 0 wrong; float and double counted.
 #include <catch2/catch.hpp>
 #include "kd_support.hpp"
+#include "spatial/kd_point_tree.hpp"
 
 using namespace sw;
 using namespace sw::testing::kd;
@@ -136,4 +137,42 @@ TEST_CASE("kd-nearest: every k on a small set with duplicates, identical points,
   check_refused(a, {R"({"points":[[0,0],[1,1]],"query":[0,0],"k":0})", R"({"points":[[0,0],[1,1]],"query":[0,0],"k":3})",
                     R"({"points":[[0,0],[1,1]],"query":[0,0,0],"k":1})", R"({"points":[[0,0],[1,1]],"query":[0,0],"k":1.5})",
                     R"({"points":[[0,0],[1,1]],"query":[0,"nan"],"k":1})"});
+}
+
+// kd_point_tree (median splits, the photon map's): kd-nearest on it gives the exact k nearest in
+// exact mode, and in double the very answer it gives on kd-build's tree (the search's answer does
+// not depend on the tree), on random points and on grids full of ties and duplicates.
+template <int D> void run_point_tree(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  NoProbe none;
+  for (const auto& [bits, dup] : {std::pair{30, 0.0}, std::pair{1, 0.25}, std::pair{0, 0.5}}) {
+    PointScene<D> sc(points<D>(rng, 300, bits, dup));
+    for (const std::int32_t leaf : {1, 3, 8}) {
+      const KdTree<Q, D> tq = kd_point_tree<Q, D>(sc.pq, leaf);
+      const KdTree<double, D> td = kd_point_tree<double, D>(sc.pd, leaf);
+      CHECK(td.depth <= 10);  // log2(300) + 1: median splits halve every range
+      for (int i = 0; i < 60; ++i) {
+        std::array<double, D> q;
+        for (double& x : q) x = grid_coord(rng, -5, 5, i % 2 ? 1 : 20);
+        const std::size_t k = std::size_t{1} + static_cast<std::size_t>(i % 13) * 7;
+        const auto want = oracle::k_nearest(sc.pq, vec_from<Q, D>(q), k);
+        std::vector<std::int32_t> ids;
+        std::vector<Q> d2;
+        for (const auto& [d, id] : want) ids.push_back(id), d2.push_back(d);
+        const auto exact = kd_nearest_tree<Q, D>(tq, sc.pq, vec_from<Q, D>(q), k, none);
+        INFO(D << "D leaf " << leaf << " k " << k);
+        CHECK(exact.ids == ids);
+        CHECK(exact.d2 == d2);
+        const auto on_median = kd_nearest_tree<double, D>(td, sc.pd, vec_from<double, D>(q), k, none);
+        const auto on_sah = kd_nearest_tree<double, D>(sc.kdd, sc.pd, vec_from<double, D>(q), k, none);
+        CHECK(on_median.ids == on_sah.ids);
+        CHECK(on_median.d2 == on_sah.d2);
+      }
+    }
+  }
+}
+
+TEST_CASE("kd-nearest on the median point tree: the exact k nearest, and double's answer on kd-build's tree", "[spatial][spatial-kd]") {
+  run_point_tree<2>(41);
+  run_point_tree<3>(42);
 }
