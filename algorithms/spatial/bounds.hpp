@@ -17,8 +17,13 @@ template <class Num, int D> struct Box {
   static Box at(const VecN<Num, D>& p) { return {p, p}; }
   void grow(const VecN<Num, D>& p) {
     for (int k = 0; k < D; ++k) {
-      if (p[k] < lo[k]) lo[k] = p[k];
-      if (hi[k] < p[k]) hi[k] = p[k];
+      if constexpr (std::is_floating_point_v<Num>) {  // the same choice, as minsd/maxsd: no branch to mispredict
+        lo[k] = p[k] < lo[k] ? p[k] : lo[k];
+        hi[k] = hi[k] < p[k] ? p[k] : hi[k];
+      } else {  // exact types: no copy of a coordinate onto itself
+        if (p[k] < lo[k]) lo[k] = p[k];
+        if (hi[k] < p[k]) hi[k] = p[k];
+      }
     }
   }
   void grow(const Box& b) { grow(b.lo), grow(b.hi); }

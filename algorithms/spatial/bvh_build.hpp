@@ -61,11 +61,16 @@ struct BvhBuild {
 };
 
 namespace bvh_detail {
-// The union of the boxes of order[first, first + count).
-template <class Num> Box<Num, 3> union_of(const std::vector<Box<Num, 3>>& boxes, const std::vector<std::int32_t>& order,
-                                          std::int32_t first, std::int32_t count) {
-  Box<Num, 3> b = boxes[order[first]];
-  for (std::int32_t j = first + 1; j < first + count; ++j) b.grow(boxes[order[j]]);
+// A triangle as the build moves it: its box, its doubled centroid and its id.
+template <class Num> struct Prim {
+  Box<Num, 3> box;
+  Vec3<Num> c;
+  std::int32_t id;
+};
+// The union of the boxes of prim[first, first + count).
+template <class Num> Box<Num, 3> union_of(const std::vector<Prim<Num>>& prim, std::int32_t first, std::int32_t count) {
+  Box<Num, 3> b = prim[first].box;
+  for (std::int32_t j = first + 1; j < first + count; ++j) b.grow(prim[j].box);
   return b;
 }
 // The bin of centroid coordinate c >= lo, given scale = 16 / (hi - lo), clamped to the last bin.
@@ -78,36 +83,44 @@ template <class Num> int bin_of(const Num& c, const Num& lo, const Num& scale) {
 }  // namespace bvh_detail
 
 // Precondition: 1 <= tris.size() <= 2^21 (validated by the Spec).
+// The triangles' boxes and centroids are kept in node order and move with the ids when a node is
+// split, so every pass over a node reads memory in sequence (not through the ids, which scatter).
 template <NumberType Num, StepProbe Probe = NoProbe>
 Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& probe) {
   using L = BvhBuild;
   using B3 = Box<Num, 3>;
+  using bvh_detail::Prim;
   const auto n_tris = static_cast<std::int32_t>(tris.size());
-  std::vector<B3> boxes;
-  std::vector<Vec3<Num>> cen;
-  boxes.reserve(tris.size()), cen.reserve(tris.size());
-  for (const auto& t : tris) boxes.push_back(triangle_bounds(t)), cen.push_back(boxes.back().lo + boxes.back().hi);
+  std::vector<Prim<Num>> prim, scratch(tris.size());
+  prim.reserve(tris.size());
+  for (std::int32_t i = 0; i < n_tris; ++i) {
+    const B3 b = triangle_bounds(tris[i]);
+    prim.push_back({b, b.lo + b.hi, i});
+  }
   if constexpr (Probe::on) {
     auto& s = probe.step(L::bounds, StepKind::init).idx("triangles", n_tris);
     for (const auto& t : tris) s.triangle(t[0], t[1], t[2]).keep();
   }
   Bvh<Num> out;
-  out.order.resize(tris.size());
-  for (std::int32_t i = 0; i < n_tris; ++i) out.order[i] = i;
   out.nodes.reserve(2 * tris.size());
-  out.nodes.push_back({bvh_detail::union_of(boxes, out.order, 0, n_tris), -1, -1, -1, 0, n_tris, 0, -1});
+  out.nodes.push_back({bvh_detail::union_of(prim, 0, n_tris), -1, -1, -1, 0, n_tris, 0, -1});
   if constexpr (Probe::on)
     probe.step(L::root, StepKind::init).idx("node", 0).node(0, -1, out.nodes[0].box.lo, out.nodes[0].box.hi).keep();
-  std::vector<std::int32_t> stack{0}, scratch(tris.size());
-  std::vector<std::uint8_t> bins(3 * tris.size());  // each triangle's bin on each axis, at its latest node
+  std::vector<std::int32_t> stack{0};
+  std::vector<std::uint8_t> bins(3 * tris.size());  // each position's bin on each axis, at its latest node
+  // Per node, reused (not cleared: a bin's box is set by its first triangle, right_area[s] only
+  // read where right_n[s] > 0).
+  std::array<std::array<B3, kBvhBins>, 3> bin;
+  std::array<Num, kBvhBins> right_area;
+  std::array<std::int32_t, kBvhBins> right_n;
   // Bounded: every node is pushed once, and a split makes two non-empty sides, so at most 2n - 1 nodes.
   while (!stack.empty()) {
     const std::int32_t id = stack.back();
     stack.pop_back();
     const BvhNode<Num> nd = out.nodes[id];
-    const std::int32_t n = nd.count;
-    B3 c = B3::at(cen[out.order[nd.first]]);
-    for (std::int32_t j = nd.first + 1; j < nd.first + n; ++j) c.grow(cen[out.order[j]]);
+    const std::int32_t n = nd.count, first = nd.first;
+    B3 c = B3::at(prim[first].c);
+    for (std::int32_t j = first + 1; j < first + n; ++j) c.grow(prim[j].c);
     if constexpr (Probe::on)
       probe.step(L::pop, StepKind::visit)
           .idx("node", id)
@@ -120,7 +133,8 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
     auto leaf = [&] {
       ++out.leaves;
       if constexpr (Probe::on) {
-        std::vector<std::int64_t> prims(out.order.begin() + nd.first, out.order.begin() + nd.first + n);
+        std::vector<std::int64_t> prims;
+        for (std::int32_t j = first; j < first + n; ++j) prims.push_back(prim[j].id);
         probe.step(L::leaf, StepKind::visit).idx("node", id).ilist("prims", prims);
       }
     };
@@ -129,39 +143,41 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
       leaf();
       continue;
     }
-    // The binned SAH: the least-cost split over the axes where the centroids spread.
+    // The binned SAH: the least-cost split over the axes where the centroids spread. One pass
+    // bins the node's triangles on all three axes.
     int best_axis = -1, best_split = 0;
     std::int32_t best_left = 0;  // the triangles left of the best split
     Num best_cost{};
+    std::array<std::array<std::int32_t, kBvhBins>, 3> count{};
     if (nd.depth < kBvhSahDepth) {
-      for (int k = 0; k < 3; ++k) {
-        if (!(c.lo[k] < c.hi[k])) continue;
-        std::array<std::int32_t, kBvhBins> count{};
-        std::array<B3, kBvhBins> bin{};
-        const Num scale = Num(kBvhBins) / (c.hi[k] - c.lo[k]);
-        for (std::int32_t j = nd.first; j < nd.first + n; ++j) {
-          const std::int32_t i = out.order[j];
-          const int b = bvh_detail::bin_of(cen[i][k], c.lo[k], scale);
-          bins[3 * i + k] = static_cast<std::uint8_t>(b);
-          if (count[b]++ == 0) bin[b] = boxes[i];
-          else bin[b].grow(boxes[i]);
+      std::array<Num, 3> scale{};
+      std::array<bool, 3> spread{};
+      for (int k = 0; k < 3; ++k)
+        if ((spread[k] = c.lo[k] < c.hi[k])) scale[k] = Num(kBvhBins) / (c.hi[k] - c.lo[k]);
+      for (std::int32_t j = first; j < first + n; ++j)
+        for (int k = 0; k < 3; ++k) {
+          if (!spread[k]) continue;
+          const int b = bvh_detail::bin_of(prim[j].c[k], c.lo[k], scale[k]);
+          bins[3 * j + k] = static_cast<std::uint8_t>(b);
+          if (count[k][b]++ == 0) bin[k][b] = prim[j].box;
+          else bin[k][b].grow(prim[j].box);
         }
+      for (int k = 0; k < 3; ++k) {
+        if (!spread[k]) continue;
         if constexpr (Probe::on) {
-          std::vector<std::int64_t> counts(count.begin(), count.end());
+          std::vector<std::int64_t> counts(count[k].begin(), count[k].end());
           auto& s = probe.step(L::bins, StepKind::advance).idx("axis", k).ilist("counts", counts);
           for (int b = 0; b < kBvhBins; ++b)
-            if (count[b] > 0) s.box(bin[b].lo, bin[b].hi).label("bin");
+            if (count[k][b] > 0) s.box(bin[k][b].lo, bin[k][b].hi).label("bin");
         }
         // Right-to-left areas first, then the left-to-right sweep.
-        std::array<Num, kBvhBins> right_area{};
-        std::array<std::int32_t, kBvhBins> right_n{};
         B3 acc{};
         std::int32_t m = 0;
         for (int b = kBvhBins - 1; b > 0; --b) {
-          if (count[b] > 0) {
-            if (m == 0) acc = bin[b];
-            else acc.grow(bin[b]);
-            m += count[b];
+          if (count[k][b] > 0) {
+            if (m == 0) acc = bin[k][b];
+            else acc.grow(bin[k][b]);
+            m += count[k][b];
           }
           right_n[b] = m;
           if (m > 0) right_area[b] = acc.half_area();
@@ -171,10 +187,10 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
         std::int32_t axis_left = 0;
         Num axis_cost{};
         for (int s = 1; s < kBvhBins; ++s) {
-          if (count[s - 1] > 0) {
-            if (m == 0) acc = bin[s - 1];
-            else acc.grow(bin[s - 1]);
-            m += count[s - 1];
+          if (count[k][s - 1] > 0) {
+            if (m == 0) acc = bin[k][s - 1];
+            else acc.grow(bin[k][s - 1]);
+            m += count[k][s - 1];
           }
           if (m == 0 || right_n[s] == 0) continue;
           const Num cost = acc.half_area() * Num(m) + right_area[s] * Num(right_n[s]);
@@ -187,6 +203,8 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
       }
     }
     const Num area = nd.box.half_area();
+    std::int32_t left_n = 0;  // the left child's triangles
+    B3 left_box, right_box;
     if (best_axis >= 0) {
       const Num leaf_cost = Num(n) * area, split_cost = Num(kBvhTraversalCost) * area + best_cost;
       const bool make_leaf = n <= kBvhMaxLeaf && !(split_cost < leaf_cost);
@@ -203,14 +221,21 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
       }
       const int k = best_axis;
       // A stable partition: the left side's triangles, then the right side's, each in order.
-      std::int32_t nl = 0, nr = best_left;
-      for (std::int32_t j = nd.first; j < nd.first + n; ++j) {
-        const std::int32_t i = out.order[j];
-        scratch[bins[3 * i + k] < best_split ? nl++ : nr++] = i;
-      }
-      std::copy(scratch.begin(), scratch.begin() + n, out.order.begin() + nd.first);
+      std::int32_t nl = first, nr = first + best_left;
+      for (std::int32_t j = first; j < first + n; ++j) scratch[bins[3 * j + k] < best_split ? nl++ : nr++] = prim[j];
+      std::copy(scratch.begin() + first, scratch.begin() + first + n, prim.begin() + first);
       out.nodes[id].axis = static_cast<std::int8_t>(k);
-      out.nodes[id].left = best_left;  // the split point, made a node id below
+      left_n = best_left;
+      // Each side's box is the union of its bins' boxes: the same exact min and max.
+      auto bins_union = [&](int from, int to) {
+        int b = from;
+        while (count[k][b] == 0) ++b;  // a side is never empty
+        B3 u = bin[k][b];
+        for (++b; b < to; ++b)
+          if (count[k][b] > 0) u.grow(bin[k][b]);
+        return u;
+      };
+      left_box = bins_union(0, best_split), right_box = bins_union(best_split, kBvhBins);
     } else {
       // No spread left to bin, or past the SAH depth: the median of (c_ik, i); ranges stay in id
       // order (stable partitions), so a stable sort by c_ik sorts by (c_ik, i).
@@ -221,18 +246,16 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
         leaf();
         continue;
       }
-      std::stable_sort(out.order.begin() + nd.first, out.order.begin() + nd.first + n,
-                       [&](std::int32_t a, std::int32_t b) { return cen[a][k] < cen[b][k]; });
+      std::stable_sort(prim.begin() + first, prim.begin() + first + n,
+                       [&](const Prim<Num>& a, const Prim<Num>& b) { return a.c[k] < b.c[k]; });
       out.nodes[id].axis = static_cast<std::int8_t>(k);
-      out.nodes[id].left = n / 2;
+      left_n = n / 2;
+      left_box = bvh_detail::union_of(prim, first, left_n), right_box = bvh_detail::union_of(prim, first + left_n, n - left_n);
     }
-    const std::int32_t left_n = out.nodes[id].left;
     const auto l = static_cast<std::int32_t>(out.nodes.size()), r = l + 1;
     out.nodes[id].left = l, out.nodes[id].right = r;
-    out.nodes.push_back(
-        {bvh_detail::union_of(boxes, out.order, nd.first, left_n), id, -1, -1, nd.first, left_n, nd.depth + 1, -1});
-    out.nodes.push_back({bvh_detail::union_of(boxes, out.order, nd.first + left_n, n - left_n), id, -1, -1, nd.first + left_n,
-                         n - left_n, nd.depth + 1, -1});
+    out.nodes.push_back({left_box, id, -1, -1, first, left_n, nd.depth + 1, -1});
+    out.nodes.push_back({right_box, id, -1, -1, first + left_n, n - left_n, nd.depth + 1, -1});
     if constexpr (Probe::on)
       probe.step(L::split, StepKind::advance)
           .idx("node", id)
@@ -247,6 +270,8 @@ Bvh<Num> bvh_build(const std::vector<std::array<Vec3<Num>, 3>>& tris, Probe& pro
           .keep();
     stack.push_back(r), stack.push_back(l);
   }
+  out.order.reserve(tris.size());
+  for (const auto& p : prim) out.order.push_back(p.id);
   if constexpr (Probe::on)
     probe.step(L::done, StepKind::done)
         .idx("nodes", static_cast<std::int64_t>(out.nodes.size()))
