@@ -29,6 +29,7 @@ using check_values::line_label;
 using check_values::require_step_shape;
 using check_values::show;
 using check_values::step_context;
+using check_values::step_agrees;
 using check_values::step_diff;
 
 // Nesting depth of a JSON value, without recursion (check_values::kMaxNesting bounds it).
@@ -164,10 +165,16 @@ CheckReport check_trace(std::istream& in, CheckScope scope, const Budget& budget
     // it is made, so memory does not grow with the number of steps. The result line costs memory
     // in its size: its text, and its lists of tuples (pixels) held flat (check_result.hpp).
     std::optional<Json> pending;  // a trace line read but not yet matched
+    FlatJson flat_want, flat_got;  // the fast path's readings, reused from step to step
     LineSink sink([&](const std::string& text) {
       if (scope == CheckScope::result) return;  // the trace's steps are read past below
       if (!next_text()) throw InputError("no result line ({\"result\":...}) at the end of the trace");
       if (line == text) {  // byte-identical (our own exact traces): agrees without parsing
+        agreed_want = text, agreed_got = line;
+        ++i;
+        return;
+      }
+      if (flat_want.read(text) && flat_got.read(line) && step_agrees(flat_want, flat_got, i, tol, geometry_required)) {
         agreed_want = text, agreed_got = line;
         ++i;
         return;

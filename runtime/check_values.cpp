@@ -1,21 +1,16 @@
 #include "check_values.hpp"
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <string_view>
+#include <system_error>
 
 namespace sw::check_values {
 
 namespace {
 
-// A number's value as a double with a bound on its relative error, when it is cheap to get: a JSON
-// number (exact), or a "p/q" / decimal string. Parts that read as finite doubles are rounded once
-// each; longer parts (a reference value's thousands of digits) are read from their first 18
-// digits and their length, so that a rounded trace is compared without exact arithmetic.
-struct Approx {
-  double value, rel;
-};
 // A run of digits as lead * 10^exp, lead its first 18 digits (exact in a long double).
 struct Digits {
   long double lead;
@@ -26,25 +21,27 @@ std::optional<Digits> approx_part(std::string_view s) {
   s.remove_prefix(std::min(s.find_first_not_of('0'), s.size() - 1));  // leading zeros would hide the leading digits
   constexpr std::size_t kLead = 18;
   const std::size_t n = std::min(s.size(), kLead);
-  return Digits{std::strtold(std::string(s.substr(0, n)).c_str(), nullptr), static_cast<std::ptrdiff_t>(s.size() - n)};
+  char lead[kLead + 1] = {};
+  s.copy(lead, n);
+  return Digits{std::strtold(lead, nullptr), static_cast<std::ptrdiff_t>(s.size() - n)};
 }
-std::optional<Approx> approx(const Json& v) {
-  if (v.is_number()) return Approx{v.get<double>(), 0};
-  if (!v.is_string()) return std::nullopt;
-  const std::string& s = v.get_ref<const std::string&>();
-  if (s.find_first_not_of("0123456789+-./") != std::string::npos) return std::nullopt;  // parse_rational's syntax decides
+
+}  // namespace
+
+std::optional<Approx> approx_text(std::string_view s) {
+  if (s.find_first_not_of("0123456789+-./") != std::string_view::npos) return std::nullopt;  // parse_rational's syntax decides
   const std::size_t slash = s.find('/');
-  if (slash == std::string::npos && s.find('.') != std::string::npos) {  // a decimal: short ones only
+  if (slash == std::string_view::npos && s.find('.') != std::string_view::npos) {  // a decimal: short ones only
     if (s.size() > 40) return std::nullopt;
-    char* end = nullptr;
-    const double d = std::strtod(s.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(d)) return std::nullopt;
+    double d = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), d);
+    if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(d)) return std::nullopt;
     return Approx{d, 0x1p-52};
   }
   const bool negative = !s.empty() && s[0] == '-';
   const std::size_t start = !s.empty() && (s[0] == '-' || s[0] == '+');
-  const auto p = approx_part(std::string_view(s).substr(start, slash == std::string::npos ? std::string::npos : slash - start));
-  const auto q = slash == std::string::npos ? std::optional<Digits>(Digits{1, 0}) : approx_part(std::string_view(s).substr(slash + 1));
+  const auto p = approx_part(s.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start));
+  const auto q = slash == std::string_view::npos ? std::optional<Digits>(Digits{1, 0}) : approx_part(s.substr(slash + 1));
   if (!p || !q || q->lead == 0) return std::nullopt;
   const std::ptrdiff_t e = p->exp - q->exp;
   if (e > 400 || e < -400) return std::nullopt;
@@ -54,6 +51,20 @@ std::optional<Approx> approx(const Json& v) {
   // Each part within 10^-17 of its value (18 digits kept), the long double steps within 2^-62, one
   // rounding to double: together below 2^-51.
   return Approx{negative ? -d : d, 0x1p-51};
+}
+
+bool surely_within(const Approx& w, const Approx& g, const Tolerance& tol) {
+  if (tol.rel_d < 0x1p-40 || !std::isfinite(w.value) || !std::isfinite(g.value)) return false;
+  const double err = (w.rel + 0x1p-52) * std::fabs(w.value) + (g.rel + 0x1p-52) * std::fabs(g.value);
+  return std::fabs(g.value - w.value) + err <= tol.rel_d * (1 + std::fabs(w.value)) * (1 - 0x1p-50);
+}
+
+namespace {
+
+std::optional<Approx> approx(const Json& v) {
+  if (v.is_number()) return Approx{v.get<double>(), 0};
+  if (!v.is_string()) return std::nullopt;
+  return approx_text(v.get_ref<const std::string&>());
 }
 
 }  // namespace
@@ -85,12 +96,9 @@ std::optional<std::string> value_diff(const Json& want, const Json& got, const T
     // A filter, as for the algorithms' own decisions: where the difference of the double values is
     // surely within the tolerance (their rounding, at most 2^-51 relative each, counted against it),
     // the exact comparison is not needed. Rounded traces are mostly decided here.
-    if (!exact && !want.is_number_integer() && tol.rel_d >= 0x1p-40) {
+    if (!exact && !want.is_number_integer()) {
       const auto w = approx(want), g = approx(got);
-      if (w && g && std::isfinite(w->value) && std::isfinite(g->value)) {
-        const double err = (w->rel + 0x1p-52) * std::fabs(w->value) + (g->rel + 0x1p-52) * std::fabs(g->value);
-        if (std::fabs(g->value - w->value) + err <= tol.rel_d * (1 + std::fabs(w->value)) * (1 - 0x1p-50)) return std::nullopt;
-      }
+      if (w && g && surely_within(*w, *g, tol)) return std::nullopt;
     }
     Rational w, g;
     try {
