@@ -27,7 +27,7 @@ LIST_ONLY=0
 CHECK_ONLY=0
 FULL=0
 QUICK=0
-BUILD_TIMEOUT=1800   # seconds for one rebuild
+BUILD_TIMEOUT=3600   # seconds for one mutant's rebuild (the unmutated tree's first build has none)
 TEST_TIMEOUT=900     # seconds for one ctest run (each test also has its own 120 s limit)
 
 while (($#)); do
@@ -169,7 +169,7 @@ LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake -S "$SRC" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSW_BENCH=OFF "${LAUNCHER[@]}" >"$WORK/configure.log" 2>&1 ||
   { cat "$WORK/configure.log"; echo "mutate: configure failed" >&2; exit 2; }
 
-build() { timeout "$BUILD_TIMEOUT" nice -n 10 cmake --build "$BUILD" --target sw_tests -j"$JOBS" >"$WORK/build.log" 2>&1; }
+build() { timeout "${1:-$BUILD_TIMEOUT}" nice -n 10 cmake --build "$BUILD" --target sw_tests -j"$JOBS" >"$WORK/build.log" 2>&1; }
 # Runs ctest on the tests matching $1 (all if empty) and not matching $2 (none if empty); $3 adds
 # ctest options. Leaves the failed tests' names in $WORK/failed, sorted.
 run_tests() {
@@ -191,7 +191,7 @@ names_regex() { [[ -s $1 ]] && sed 's/[^A-Za-z0-9 ]/./g; s/^/^/; s/$/$/' "$1" | 
 
 echo "mutate: building the unmutated tree"
 t0=$SECONDS
-build || { tail -30 "$WORK/build.log"; echo "mutate: the unmutated tree does not build" >&2; exit 2; }
+build 0 || { tail -30 "$WORK/build.log"; echo "mutate: the unmutated tree does not build" >&2; exit 2; }
 echo "mutate: built in $((SECONDS - t0)) s; running the tests"
 t0=$SECONDS
 run_tests "" ""
