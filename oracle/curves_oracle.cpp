@@ -7,15 +7,13 @@
 namespace sw::oracle {
 namespace {
 
-static_assert(sizeof(long) >= sizeof(std::int64_t), "mpz get_si must hold an int64");
-
 // round(v) = floor(v + 1/2), exactly; throws if the result does not fit a pixel index.
 std::int64_t round_q(const Q& v) {
   const Rational w = r(v + Q(1, 2));
   mpz_class f;
   mpz_fdiv_q(f.get_mpz_t(), w.get_num_mpz_t(), w.get_den_mpz_t());
-  if (!mpz_fits_slong_p(f.get_mpz_t())) throw std::overflow_error("poly_pixels: round(y) out of int64 range");
-  return f.get_si();
+  if (mpz_sizeinbase(f.get_mpz_t(), 2) > 63) throw std::overflow_error("poly_pixels: round(y) out of int64 range");
+  return num::int64_of(f);
 }
 
 // --- Per-row statements, on GMP integers. Each row is computed on its own from r and y. ---
@@ -24,25 +22,25 @@ std::int64_t round_q(const Q& v) {
 // even 4D, so (2k - 1)^2 < 4D iff 2k - 1 <= isqrt(4D): k = (isqrt(4D) + 1) / 2. The two loops only
 // re-establish the definition's two inequalities should that reasoning ever be off; they never run.
 std::int64_t midpoint_row(const mpz_class& r, std::int64_t y) {
-  const mpz_class yy = y;
+  const mpz_class yy = num::mpz_of(y);
   const mpz_class four_d = 4 * (r * r - yy * yy);
   if (four_d <= 0) return 0;  // only the k == 0 clause holds
   mpz_class k = (sqrt(four_d) + 1) / 2;
   auto sq = [](const mpz_class& m) { return mpz_class(m * m); };
   while (k > 0 && sq(2 * k - 1) >= four_d) --k;
   while (sq(2 * k + 1) < four_d) ++k;
-  return k.get_si();
+  return num::int64_of(k);
 }
 
 // I(y) of the interior border: isqrt(r^2 - y^2), or -1 when r^2 - y^2 < 0 (no k >= 0 exists).
 std::int64_t interior_row(const mpz_class& r, std::int64_t y) {
-  const mpz_class yy = y;
+  const mpz_class yy = num::mpz_of(y);
   const mpz_class d = r * r - yy * yy;
   if (d < 0) return -1;
   mpz_class k = sqrt(d);
   while (k > 0 && k * k > d) --k;
   while ((k + 1) * (k + 1) <= d) ++k;
-  return k.get_si();
+  return num::int64_of(k);
 }
 
 // O's rows y = 0, 1, ... while y <= row(y), their 8 mirror images moved to the centre, distinct and
@@ -50,7 +48,7 @@ std::int64_t interior_row(const mpz_class& r, std::int64_t y) {
 template <class Row> std::vector<Pixel> octant_images(std::int64_t cx, std::int64_t cy, std::int64_t r, Row row) {
   std::vector<Pixel> out;
   if (r < 0) return out;
-  const mpz_class rz = r;
+  const mpz_class rz = num::mpz_of(r);
   for (std::int64_t y = 0;; ++y) {
     const std::int64_t k = row(rz, y);
     if (y > k) break;

@@ -179,7 +179,7 @@ std::vector<Pixel> window_samples(const std::array<std::array<Rational, 3>, 3>& 
     mpz_class f;
     if (hi) mpz_fdiv_q(f.get_mpz_t(), m.get_num_mpz_t(), m.get_den_mpz_t());
     else mpz_cdiv_q(f.get_mpz_t(), m.get_num_mpz_t(), m.get_den_mpz_t());
-    return std::clamp<std::int64_t>(f.get_si(), -1, (axis == 0 ? width : height));
+    return std::clamp<std::int64_t>(num::int64_of(f), -1, (axis == 0 ? width : height));
   };
   std::vector<Pixel> out;
   for (std::int64_t j = std::max<std::int64_t>(0, bound(1, false)); j <= std::min(height - 1, bound(1, true)); ++j)

@@ -1,5 +1,4 @@
 #include "check_values.hpp"
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,8 +33,7 @@ std::optional<Approx> approx_text(std::string_view s) {
   if (slash == std::string_view::npos && s.find('.') != std::string_view::npos) {  // a decimal: short ones only
     if (s.size() > 40) return std::nullopt;
     double d = 0;
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), d);
-    if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(d)) return std::nullopt;
+    if (!parse_double(s, d) || !std::isfinite(d)) return std::nullopt;
     return Approx{d, 0x1p-52};
   }
   const bool negative = !s.empty() && s[0] == '-';

@@ -1,7 +1,6 @@
 #include "flat_json.hpp"
-#include <charconv>
 #include <cmath>
-#include <system_error>
+#include "core/portable.hpp"
 
 namespace sw {
 
@@ -139,8 +138,7 @@ std::optional<std::uint32_t> FlatJson::member(std::uint32_t o, std::string_view 
 std::optional<double> FlatJson::number(std::uint32_t i) const {
   const std::string_view t = nodes_[i].text;
   double d = 0;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), d);
-  if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(d)) return std::nullopt;
+  if (!parse_double(t, d) || !std::isfinite(d)) return std::nullopt;
   return d;
 }
 

@@ -281,7 +281,7 @@ std::int64_t parse_integer(const Json& v, const std::string& what, std::int64_t 
   if (q.get_den() != 1) throw InputError(what + ": " + q.get_str() + " is not an integer");
   if (q < Rational(lo) || q > Rational(hi))
     throw InputError(what + ": " + q.get_str() + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return q.get_num().get_si();
+  return num::int64_of(q.get_num());
 }
 
 void check_digits(const Rational& v, const std::string& what) {

@@ -6,7 +6,6 @@
 // Included by number.hpp after its declarations; include number.hpp, not this file.
 #pragma once
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -104,7 +103,7 @@ class Interval {
   }
   // The significant bits of a normal double's significand (trailing zeros dropped).
   static int significant_bits(double x) {
-    const std::uint64_t m = (std::bit_cast<std::uint64_t>(x) & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
+    const std::uint64_t m = (sw::bit_cast<std::uint64_t>(x) & ((std::uint64_t{1} << 52) - 1)) | (std::uint64_t{1} << 52);
     return 53 - __builtin_ctzll(m);
   }
   // Knuth's TwoSum: s = fl(a + b) is exact iff the rounding error it recovers is 0.

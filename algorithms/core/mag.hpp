@@ -47,7 +47,6 @@
 #include <emmintrin.h>  // the square root's packed sqrtpd and maxpd; SSE2 is baseline on x86-64
 #else
 #define SW_MAG_SSE2 0  // the portable fallback: two doubles
-#include <bit>
 #endif
 
 namespace sw {
@@ -70,7 +69,7 @@ struct Pair {
 [[gnu::always_inline]] inline double max0(double x) { return 0.0 > x ? 0.0 : x; }
 // c ? a : b as a bitwise blend, like the SSE2 path's (no branch on data).
 [[gnu::always_inline]] inline double blend(std::uint64_t mask, double a, double b) {
-  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+  return sw::bit_cast<double>((sw::bit_cast<std::uint64_t>(a) & mask) | (sw::bit_cast<std::uint64_t>(b) & ~mask));
 }
 #endif
 struct NoIndex {};

@@ -36,8 +36,7 @@ template <> Rational from_rational<Rational>(const Rational& q) { return q; }
 
 template <class F> static std::string shortest(F x) {
   char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
+  return std::string(buf, shortest_chars(buf, buf + sizeof buf, x));
 }
 // A float is written as the shortest double that equals it, so that reading it back as a double
 // (as JSON readers do) gives the float's exact value.

@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <utility>
 #include <gmpxx.h>
+#include "core/portable.hpp"
 
 namespace sw {
 
@@ -50,6 +51,21 @@ class Rational : public mpq_class {
   Rational() = default;
   Rational(const mpq_class& q) : mpq_class(q) {}
   Rational(mpq_class&& q) : mpq_class(std::move(q)) {}
+  // GMP takes a long, which holds an int64 on x86-64 but not on wasm32 (the browser build), where
+  // std::int64_t is long long: that goes through the int64 helpers (core/portable.hpp).
+  // Templates, so that an int still takes GMP's own overloads.
+  template <class LL> requires std::is_same_v<LL, long long> Rational(LL v) : mpq_class(num::mpz_of(v)) {}
+  template <class LL> requires std::is_same_v<LL, long long> Rational(LL p, LL q) : mpq_class(num::mpz_of(p), num::mpz_of(q)) {}
+#define SW_RATIONAL_CMP(op) \
+  template <class LL> requires std::is_same_v<LL, long long> friend bool operator op(const Rational& a, LL b) { return a op Rational(b); } \
+  template <class LL> requires std::is_same_v<LL, long long> friend bool operator op(LL a, const Rational& b) { return Rational(a) op b; }
+  SW_RATIONAL_CMP(<)
+  SW_RATIONAL_CMP(>)
+  SW_RATIONAL_CMP(<=)
+  SW_RATIONAL_CMP(>=)
+  SW_RATIONAL_CMP(==)
+  SW_RATIONAL_CMP(!=)
+#undef SW_RATIONAL_CMP
   template <class T, class U> Rational(const __gmp_expr<T, U>& e) : mpq_class(e) {}
   Rational(const Rational&) = default;
   Rational(Rational&&) = default;
@@ -133,7 +149,7 @@ inline std::int64_t floor_int(std::int64_t x) { return x; }
 inline std::int64_t floor_int(const Rational& x) {
   mpz_class q;
   mpz_fdiv_q(q.get_mpz_t(), x.get_num_mpz_t(), x.get_den_mpz_t());
-  return q.get_si();
+  return int64_of(q);
 }
 std::int64_t floor_int(const Interval& x);
 template <class T> std::int64_t ceil_int(const T& x) { return -floor_int(T(-x)); }
@@ -235,7 +251,7 @@ template <class T> void append_json(std::string& out, const T& x) {
   } else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, float>) {
     const double d = x;  // a float as the shortest double equal to it, as to_text writes it
     if (std::isfinite(d)) {
-      out.append(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
+      out.append(buf, shortest_chars(buf, buf + sizeof buf, d));
       return;
     }
   }

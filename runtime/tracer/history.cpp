@@ -1,4 +1,5 @@
 #include "tracer/history.hpp"
+#include "platform.hpp"
 #include "data_root.hpp"
 #include <algorithm>
 #include <cstdlib>
@@ -65,7 +66,7 @@ HistoryInput parse_history_input(const Json& j) {
     const std::filesystem::path f = scene_path(j["scene"]);
     std::error_code e;
     in.scene_key = "file " + f.string() + " " + std::to_string(std::filesystem::file_size(f, e)) + " " +
-                   std::to_string(std::filesystem::last_write_time(f, e).time_since_epoch().count());
+                   std::to_string(static_cast<long long>(std::filesystem::last_write_time(f, e).time_since_epoch().count()));
   } else {
     in.scene_key = j["scene"].dump();
   }
@@ -103,7 +104,7 @@ std::shared_ptr<const HistoryScene> history_scene(const HistoryInput& in) {
   h->plan = in.all_effects ? all_effects_plan(*in.scene) : plan_scene(*in.scene);
   if (h->plan.effects.caustics) {  // the same photon map as render() builds
     std::uint64_t rays = 0;
-    build_photon_map(*in.scene, h->scene, std::max(1u, std::thread::hardware_concurrency()), h->photons, rays);
+    build_photon_map(*in.scene, h->scene, worker_threads(), h->photons, rays);
     h->scene.caustics = &h->photons;
   }
   if (!key.empty()) {

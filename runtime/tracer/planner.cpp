@@ -26,8 +26,7 @@ std::string q_text(const Q& q) {
   if (q.get_den() == 1) return q.get_num().get_str();
   if (q.get_den() < 1000000) return q.get_str();
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, q.get_d());
-  return std::string(buf, r.ptr);
+  return std::string(buf, shortest_chars(buf, buf + sizeof buf, q.get_d()));
 }
 
 Decision shadow_decision(const Scene& s, std::size_t i, const std::vector<std::optional<Proxy>>& px, const Q& margin) {
