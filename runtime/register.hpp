@@ -7,6 +7,7 @@
 #include <memory>
 #include "bench_harness.hpp"
 #include "core/jsonl_probe.hpp"
+#include "platform.hpp"
 #include "sweep.hpp"
 
 namespace sw {
@@ -63,26 +64,39 @@ template <class Spec> class OpenSpec final : public OpenInput {
     return rec;
   }
   void stream(Numeric n, std::ostream& os) const override {
-    bool fb;
-    const Output out = compute_mode<Spec>(in_, n, [&](auto t, auto&& compute) {
-      JsonlProbe<typename decltype(t)::type> probe(os);
-      auto o = compute(probe);
-      probe.finish();
-      return o;
-    }, &fb);
-    os << "{\"result\":";
-    write_result(out, n, fb, os);
-    os << "}\n";
-  }
-  Json oracle() const override { return oracle_json(Spec::oracle(in_)); }
-  void oracle_to(std::ostream& os) const override {
-    const Output out = Spec::oracle(in_);
-    if constexpr (names_hook<Spec>(Hook::write_members)) {
-      os << '{';
-      Spec::write_members(out, os);
-      os << '}';
+    if constexpr (kBrowser) {  // no JSONL writer in the page: a quarter of the algorithms' code
+      (void)n, (void)os;
+      throw InputError("the browser page writes no traces: `stepwise trace` does");
     } else {
-      os << oracle_json(out).dump();
+      bool fb;
+      const Output out = compute_mode<Spec>(in_, n, [&](auto t, auto&& compute) {
+        JsonlProbe<typename decltype(t)::type> probe(os);
+        auto o = compute(probe);
+        probe.finish();
+        return o;
+      }, &fb);
+      os << "{\"result\":";
+      write_result(out, n, fb, os);
+      os << "}\n";
+    }
+  }
+  Json oracle() const override {
+    if constexpr (kBrowser) throw InputError("the browser page has no oracle: `stepwise check` does");
+    else return oracle_json(Spec::oracle(in_));
+  }
+  void oracle_to(std::ostream& os) const override {
+    if constexpr (kBrowser) {
+      (void)os;
+      throw InputError("the browser page has no oracle: `stepwise check` does");
+    } else {
+      const Output out = Spec::oracle(in_);
+      if constexpr (names_hook<Spec>(Hook::write_members)) {
+        os << '{';
+        Spec::write_members(out, os);
+        os << '}';
+      } else {
+        os << oracle_json(out).dump();
+      }
     }
   }
 

@@ -20,10 +20,12 @@ PACKAGES=(
 )
 # The tests, their peers (POV-Ray, xvfb, Chromium, Embree, nanoflann) and the benches; clang and
 # LLVM for the sanitizer and fuzz build; `file` for CPack's .deb (its dependencies from dpkg-shlibdeps);
-# ccache for scripts/mutate.sh, whose every revert would otherwise recompile what the mutant touched.
+# ccache for scripts/mutate.sh, whose every revert would otherwise recompile what the mutant touched;
+# emscripten and what fetches and builds Debian's source packages for the browser page (scripts/web.sh).
 ((APP)) || PACKAGES+=(
   git ccache catch2 libbenchmark-dev xvfb xauth libembree-dev libtinyobjloader-dev libnanoflann-dev
   clang libclang-rt-14-dev llvm-14 chromium chromium-driver python3 python3-jsonschema povray file
+  emscripten nodejs dpkg-dev xz-utils m4 libboost-dev
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -6,7 +6,7 @@
 
 The contract (docs/cli.md, "Errors"): bad input prints ONE line on stderr, `stepwise: error: ...`, exits 2, prints
 nothing on standard output and leaves no output file, partial or temporary. Each case runs in an empty directory of
-its own, which is also its working directory and its TMPDIR; `--out`, `--gif`, `--plot` and `--html` point into it,
+its own, which is also its working directory and its TMPDIR; `--out`, `--gif`, `--plot`, `--html` and `--frames` point into it,
 and it must still be empty afterwards. A case fails when it runs longer than 20 s, when its stderr line is longer
 than 4 KiB (echoed input is cut to a short prefix) or when it peaks above 1 GiB of memory (a refusal comes before any
 work; every command runs with RLIMIT_DATA at 1.5 GiB, so an unbounded read ends instead of filling the machine).
@@ -971,7 +971,7 @@ def lesson_cases(M, lessons, questions, missing, adir, fifo, good_answers):
         return m
     readers = [("quiz", lambda f, o: ["quiz", f, "--list"]),
                ("render", lambda f, o: ["render", "--lesson", f, "--out", os.path.join(o, "x.png")]),
-               ("lesson export", lambda f, o: ["lesson", "export", f, "--html", os.path.join(o, "page")])]
+               ("lesson export", lambda f, o: ["lesson", "export", f, "--frames", os.path.join(o, "page")])]
     broken = []   # (what, text, the readers that get it)
     for k, path in enumerate(lessons):
         text = open(path, encoding="utf-8").read()
@@ -1035,17 +1035,21 @@ def lesson_cases(M, lessons, questions, missing, adir, fifo, good_answers):
                         ("--to past the last step", [L, "--from", "0", "--to", str(1 << 40)], "page"),
                         ("--from past the last step", [L, "--from", str(1 << 40)], "page"),
                         ("--from -1", [L, "--from", "-1"], "page"),
-                        ("--html in a missing directory", [L], "missing"),
-                        ("--html empty", [L], "empty"),
+                        ("the directory in a missing directory", [L], "missing"),
+                        ("an empty directory name", [L], "empty"),
                         ("an unknown option", [L, "--zz-bogus"], "page")]
         for s in BAD_SIZES:
             export_cases.append(("--size %r" % s, [L, "--size", s], "page"))
-        for what, args, html in export_cases:
-            def make(o, i, args=args, html=html):
-                dest = {"page": os.path.join(o, "page"), "missing": os.path.join(o, "missing", "page"),
-                        "empty": ""}[html]
-                return ["lesson", "export"] + args + ["--html", dest], {}
-            M.add("lesson export", None, what, make)
+        # The flip-book (--frames) takes every case; the app's page (--html) those without frame options.
+        for flag in ("--frames", "--html"):
+            for what, args, html in export_cases:
+                if flag == "--html" and ("--size" in args or "--to" in args):
+                    continue
+                def make(o, i, args=args, html=html, flag=flag):
+                    dest = {"page": os.path.join(o, "page"), "missing": os.path.join(o, "missing", "page"),
+                            "empty": ""}[html]
+                    return ["lesson", "export"] + args + [flag, dest], {}
+                M.add("lesson export", None, flag + ": " + what, make)
         for what, args in [("a missing lesson", [missing]), ("a directory as lesson", [adir]),
                            ("/dev/zero as lesson", ["/dev/zero"]), ("a good lesson and a missing one", [L, missing]),
                            ("an unknown option", [L, "--zz-bogus"])]:
@@ -1265,7 +1269,7 @@ def budget_cases(M, exe, first, lessons, source, traces, setup_failures):
         if sub == "quiz" and lesson:
             return lambda o, i: (["quiz", lesson, "--list"], {})
         if sub == "lesson export" and lesson:
-            return lambda o, i: (["lesson", "export", lesson, "--from", "0", "--to", "1", "--size", "320x240", "--html",
+            return lambda o, i: (["lesson", "export", lesson, "--from", "0", "--to", "1", "--size", "320x240", "--frames",
                                   os.path.join(o, "page")], {})
         if sub == "lesson lint" and lesson:
             return lambda o, i: (["lesson", "lint", lesson], {})

@@ -3,7 +3,7 @@
 
 Usage: lesson_export_browser.py STEPWISE LESSON WORKDIR [WxH]
 
-Exports LESSON with `stepwise lesson export`, opens DIR/index.html from file://, and checks: no
+Exports LESSON with `stepwise lesson export --frames` (the flip-book), opens DIR/index.html from file://, and checks: no
 console message of level SEVERE; ArrowRight pressed N times shows step start + N, and its frame is
 byte-identical to `stepwise render --lesson LESSON --step N --size WxH`; ArrowLeft goes back; the
 narration shown is the page data's for that step, and a step on a narrated line shows that
@@ -13,54 +13,12 @@ Standard library only (urllib, json).
 import json
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import time
-import urllib.error
-import urllib.request
 
-RIGHT, LEFT = "\ue014", "\ue012"
-
-
-def fail(msg):
-    print("FAIL: " + msg, file=sys.stderr)
-    sys.exit(1)
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-class Driver:
-    def __init__(self, base):
-        self.base = base
-        self.sid = None
-
-    def call(self, method, path, body=None):
-        data = None if body is None else json.dumps(body).encode()
-        req = urllib.request.Request(self.base + path, data=data, method=method,
-                                     headers={"Content-Type": "application/json"})
-        try:
-            with urllib.request.urlopen(req, timeout=60) as r:
-                return json.loads(r.read() or b"null")["value"]
-        except urllib.error.HTTPError as e:
-            fail("%s %s: HTTP %d %s" % (method, path, e.code, e.read()[:400]))
-
-    def s(self, method, path, body=None):
-        return self.call(method, "/session/%s%s" % (self.sid, path), body)
-
-    def js(self, script, *args):
-        return self.s("POST", "/execute/sync", {"script": script, "args": list(args)})
-
-    def key(self, k):
-        actions = [{"type": "keyDown", "value": k}, {"type": "keyUp", "value": k}]
-        self.s("POST", "/actions", {"actions": [{"type": "key", "id": "kb", "actions": actions}]})
-
-    def logs(self):
-        return self.s("POST", "/se/log", {"type": "browser"})
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from webdriver import LEFT, RIGHT, chromium_session, fail  # noqa: E402
 
 
 def shown(d):
@@ -86,53 +44,16 @@ def main():
         fail("usage: lesson_export_browser.py STEPWISE LESSON WORKDIR [WxH]")
     stepwise, lesson, work = sys.argv[1], os.path.abspath(sys.argv[2]), os.path.abspath(sys.argv[3])
     size = sys.argv[4] if len(sys.argv) > 4 else "1024x640"  # the smallest layout the app supports
-    chromium, chromedriver = shutil.which("chromium"), shutil.which("chromedriver")
-    if not chromium or not chromedriver:
-        fail("chromium and chromedriver are needed (scripts/setup.sh installs them)")
-    # chromedriver reaches Chromium's DevTools at ws://localhost; where the name does not resolve (a
-    # root without /etc/hosts) the session fails with "unable to connect to renderer".
-    try:
-        socket.getaddrinfo("localhost", None)
-    except socket.gaierror:
-        fail("'localhost' does not resolve (is /etc/hosts missing?): chromedriver reaches Chromium through it")
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     page_dir = os.path.join(work, "page")
-    r = subprocess.run([stepwise, "lesson", "export", lesson, "--html", page_dir, "--size", size],
+    r = subprocess.run([stepwise, "lesson", "export", lesson, "--frames", page_dir, "--size", size],
                        capture_output=True, text=True)
     if r.returncode != 0:
         fail("export exited %d: %s" % (r.returncode, r.stderr))
 
-    port = free_port()
-    log = open(os.path.join(work, "chromedriver.log"), "w")
-    proc = subprocess.Popen([chromedriver, "--port=%d" % port], stdout=log, stderr=subprocess.STDOUT)
-    d = Driver("http://127.0.0.1:%d" % port)
-    try:
-        for _ in range(300):  # bounded: up to 30 s for chromedriver to listen
-            try:
-                if d.call("GET", "/status")["ready"]:
-                    break
-            except (urllib.error.URLError, ConnectionError):
-                pass
-            time.sleep(0.1)
-        else:
-            fail("chromedriver did not start")
-        caps = {"browserName": "chrome", "goog:loggingPrefs": {"browser": "ALL"},
-                "goog:chromeOptions": {"binary": chromium, "args": [
-                    # Shared memory in /tmp, not /dev/shm, which a container or a bare root may lack.
-                    "--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1400,1000",
-                    "--user-data-dir=" + os.path.join(work, "profile")]}}
-        d.sid = d.call("POST", "/session", {"capabilities": {"alwaysMatch": caps}})["sessionId"]
+    with chromium_session(work) as d:
         check_page(d, stepwise, lesson, work, page_dir, size)
-    finally:
-        if d.sid:
-            try:
-                d.call("DELETE", "/session/" + d.sid)
-            except SystemExit:
-                pass
-        proc.terminate()
-        proc.wait(timeout=30)
-        log.close()
     print("ok: the exported page steps, shows the rendered frames and the narration")
 
 

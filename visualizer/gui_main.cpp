@@ -17,8 +17,8 @@
 #include <random>
 #include <sstream>
 #include "panels/app.hpp"
-#include "budget.hpp"
 #include "data_root.hpp"
+#include "host_options.hpp"
 #include "headless/gl_texture.hpp"
 #include "headless/image_io.hpp"
 
@@ -28,46 +28,17 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-struct Options {
-  std::string lesson, algorithm, input, numeric, compare, screenshot, size = "1280x800", answers_dir, student;
-  std::optional<std::size_t> step;
+struct Options : HostOptions {
+  std::string screenshot, size = "1280x800";
   int frames = 0, bench_scrub = 0;
-  double scale = 1;
-  bool present = false, quiz = false;
-  Budget budget;
 };
 
-// Opens what the options ask for; failures show in the app (and are returned for the exit code).
 bool open(Session& session, const Options& o) {
   if (o.bench_scrub) {
     // 499 997 pixels: 1 000 001 steps of the DDA line.
     return session.open_algorithm(find_algorithm("dda-line"), parse_json_text(R"({"p0":[0.5,0.25],"p1":[499997.5,123456.25]})", "bench"), Numeric::f64);
   }
-  if (o.algorithm.empty()) {
-    if (!(o.lesson.empty() ? session.open_first_lesson() : session.open_lesson(o.lesson))) return false;
-  }
-  if (!o.algorithm.empty() || !o.numeric.empty() || !o.compare.empty()) {
-    try {
-      // --algorithm with its --input (or example); or the lesson's run in other number types.
-      const TraceModel* m = session.model(0);
-      const Algorithm& alg = !o.algorithm.empty() || !m ? find_algorithm(o.algorithm.empty() ? "dda-line" : o.algorithm) : m->algorithm();
-      const Json input = !o.input.empty() ? read_input_arg(o.input) : m && &m->algorithm() == &alg ? m->input() : parse_json_text(alg.example, "example");
-      const Numeric n = !o.numeric.empty() ? parse_numeric_for(alg, o.numeric) : m && &m->algorithm() == &alg ? m->numeric() : parse_numeric_for(alg, "double");
-      Comparison cmp;
-      if (!o.compare.empty()) cmp = parse_comparison(alg, o.compare, n);
-      if (!session.open_algorithm(alg, input, n, cmp)) return false;
-    } catch (const InputError& e) {
-      session.show_error(e.what());
-      return false;
-    }
-  }
-  if (!o.answers_dir.empty()) {
-    const char* user = std::getenv("USER");
-    session.save_answers_in(o.answers_dir, !o.student.empty() ? o.student : user && *user ? user : "student");
-  }
-  if (o.quiz && !session.set_quiz(true)) return false;
-  if (o.step) session.set_step(*o.step);
-  return true;
+  return open_session(session, o);
 }
 
 }  // namespace
@@ -77,20 +48,8 @@ int main(int argc, char** argv) {
   CLI::App cli{"stepwise-gui: step through classic graphics algorithms"};
   cli.set_version_flag("--version", "stepwise-gui " SW_VERSION "\ndata: " + data_root().string());
   Options o;
-  auto* lesson = cli.add_option("--lesson", o.lesson, "Lesson file (default: the first lesson)");
-  auto* alg = cli.add_option("--algorithm", o.algorithm, "Algorithm id");
-  cli.add_option("--input", o.input, "Input as JSON text or a file holding it");
-  lesson->excludes(alg);
-  cli.add_option("--numeric", o.numeric, "Number type");
-  cli.add_option("--compare", o.compare, "A second number type, or another algorithm of the same compare group (a reflection model), side by side");
-  cli.add_option("--step", o.step, "Start at this step")->check(CLI::Validator(budget_count_error, "STEP"));
-  cli.add_option("--max-steps", o.budget.max_steps, "Refuse inputs that imply more steps (default 4000000)")->check(CLI::Validator(budget_count_error, "COUNT"));
+  add_host_options(cli, o);
   cli.add_option("--size", o.size, "Window size WxH");
-  cli.add_option("--scale", o.scale, "UI scale for fonts and spacing, 0.75 to 3 (a projector: 1.5 to 2)");
-  cli.add_flag("--present", o.present, "Start in presentation mode (P toggles it)");
-  cli.add_flag("--quiz", o.quiz, "Start the lesson in quiz mode (Q toggles it)")->excludes(alg);
-  cli.add_option("--answers-dir", o.answers_dir, "Save quiz answers as they are given, in DIR/<lesson>.jsonl (stepwise quiz grades them)");
-  cli.add_option("--student", o.student, "The name saved with the answers (default: $USER)");
   cli.add_option("--frames", o.frames, "Render this many frames, then exit")->check(CLI::Range(1, 100000));
   cli.add_option("--screenshot", o.screenshot, "With --frames: write the last frame to this PNG");
   cli.add_option("--bench-scrub", o.bench_scrub, "")->group("");  // hidden benchmark

@@ -1,4 +1,5 @@
 #include "pipeline/raster_shade.hpp"
+#include "platform.hpp"
 #include <algorithm>
 #include <cmath>
 #include <thread>
@@ -120,7 +121,7 @@ struct Shader {
 std::vector<Vec3<double>> shade_pixels(const RasterScene& s, const RasterPixels& px, Shading mode, const std::vector<std::uint32_t>* blocked) {
   const Shader sh(s);
   std::vector<V3> out(px.objects.size(), sh.ts.background);
-  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = worker_threads();
   tracer::parallel_rows(px.height, threads, {}, [&](std::int64_t j) {
     lighting::ShadeScene<double> sc;
     sc.eye = sh.eye, sc.scene_ambient = sh.ts.ambient, sc.lights = sh.ts.lights, sc.convention = lighting::Convention::models;

@@ -1,4 +1,5 @@
 #include "pipeline/raster_truth.hpp"
+#include "platform.hpp"
 #include <algorithm>
 #include <optional>
 #include <thread>
@@ -128,7 +129,7 @@ RasterTruth raster_truth(const RasterScene& s, unsigned threads) {
   RasterTruth out{s.width, s.height, std::vector<PixelTruth>(static_cast<std::size_t>(s.width * s.height)), 0};
   const pipe::Mat4<Rational> M = pipe::raster_matrix(s.camera);
   std::vector<std::int64_t> exact_rows(static_cast<std::size_t>(s.height), 0);
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  if (threads == 0) threads = worker_threads();
   tracer::parallel_rows(s.height, threads, {}, [&](std::int64_t j) {
     for (std::int64_t i = 0; i < s.width; ++i) {
       bool exact = false;

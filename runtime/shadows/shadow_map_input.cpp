@@ -1,4 +1,5 @@
 #include "shadows/shadow_map_input.hpp"
+#include "platform.hpp"
 #include <filesystem>
 #include "bench_harness.hpp"
 #include "data_root.hpp"
@@ -75,7 +76,7 @@ std::shared_ptr<const MapInput> light_input(std::shared_ptr<const RasterScene> s
     const Rational side = dot(N, V3(sc.camera.eye - in->points[k].p)), lit_side = dot(N, toward);
     in->faces.push_back((side > 0 && lit_side > 0) || (side < 0 && lit_side < 0));
   }
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  if (threads == 0) threads = worker_threads();
   constexpr std::int64_t kChunk = 256;  // points a task
   tracer::parallel_rows((std::int64_t(in->points.size()) + kChunk - 1) / kChunk, threads, {}, [&](std::int64_t c) {
     for (std::size_t k = std::size_t(c * kChunk); k < std::min(in->points.size(), std::size_t((c + 1) * kChunk)); ++k)

@@ -9,10 +9,12 @@
 #include <mutex>
 #include <thread>
 #include <vector>
+#include "platform.hpp"
 
 namespace sw::tracer {
 
-// Runs work(row) for every row on `threads` threads, reporting progress from this thread.
+// Runs work(row) for every row on `threads` threads, reporting progress from this thread. Where
+// there are no threads (platform.hpp), all rows run on this one, and only the end is reported.
 template <class Work> void parallel_rows(std::int64_t rows, unsigned threads, const std::function<void(double)>& progress, const Work& work) {
   std::atomic<std::int64_t> next{0}, done{0};
   std::atomic<bool> failed{false};
@@ -31,9 +33,10 @@ template <class Work> void parallel_rows(std::int64_t rows, unsigned threads, co
     }
   };
   std::vector<std::thread> pool;
-  const unsigned workers = progress ? threads : threads - 1;  // with progress, this thread only reports
+  // With progress, this thread only reports.
+  const unsigned workers = !kHaveThreads ? 0 : progress ? threads : threads - 1;
   for (unsigned k = 0; k < workers; ++k) pool.emplace_back(run);
-  if (progress) {
+  if (progress && workers > 0) {
     while (done < rows && !failed) {
       progress(double(done) / double(rows));
       std::this_thread::sleep_for(std::chrono::milliseconds(50));

@@ -1,4 +1,5 @@
 #include "tracer/render.hpp"
+#include "platform.hpp"
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -138,7 +139,7 @@ RenderResult render(const Scene& s, const RenderOptions& opt) {
                      " (--max-rays raises it)");
   TraceScene<double> ts = trace_scene(s, out.width, out.height);
   ts.offset = opt.offset;
-  const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = opt.threads ? opt.threads : worker_threads();
   PhotonMap photons;
   if (out.plan.effects.caustics) {
     build_photon_map(s, ts, threads, photons, out.counts.photon);

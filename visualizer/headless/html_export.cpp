@@ -12,46 +12,51 @@
 #include "headless/html_page.hpp"
 #include "headless/image_io.hpp"
 #include "headless/render_command.hpp"
+#include "data_root.hpp"
 
 namespace sw::vis {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Where the page goes. DIR may be new, an empty directory, or an earlier export (exactly
-// index.html and frames/), which is replaced; anything else is refused, so no one's files are lost.
+// Where the page goes. DIR may be new, an empty directory, or an earlier export (index.html, and
+// frames/ for a flip-book), which is replaced; anything else is refused, so no one's files are lost.
+// `option` names the flag in messages (--html, --frames).
 struct Target {
+  std::string option;
   fs::path dir, parent;
   bool exists = false, empty = false;
 };
 
-Target check_target(const std::string& arg) {
-  if (arg.empty()) throw InputError("--html: give the directory to write the page to");
+Target check_target(const std::string& arg, const std::string& option) {
+  if (arg.empty()) throw InputError(option + ": give the directory to write the page to");
   Target t;
+  t.option = option;
   t.dir = fs::absolute(fs::path(arg)).lexically_normal();
   if (!t.dir.has_filename()) t.dir = t.dir.parent_path();  // "pages/" and "pages/." name "pages"
-  if (t.dir == t.dir.root_path()) throw InputError("--html " + arg + ": refusing to write to the root directory");
+  if (t.dir == t.dir.root_path()) throw InputError(option + " " + arg + ": refusing to write to the root directory");
   t.parent = t.dir.parent_path();
   std::error_code ec;
   if (!fs::is_directory(t.parent, ec))
-    throw InputError("--html " + arg + ": the directory " + t.parent.string() + " does not exist");
+    throw InputError(option + " " + arg + ": the directory " + t.parent.string() + " does not exist");
   const fs::file_status st = fs::symlink_status(t.dir, ec);
   if (st.type() == fs::file_type::not_found) return t;
-  if (st.type() == fs::file_type::symlink) throw InputError("--html " + arg + " is a symbolic link; give the directory itself");
-  if (st.type() != fs::file_type::directory) throw InputError("--html " + arg + " exists and is not a directory");
+  if (st.type() == fs::file_type::symlink) throw InputError(option + " " + arg + " is a symbolic link; give the directory itself");
+  if (st.type() != fs::file_type::directory) throw InputError(option + " " + arg + " exists and is not a directory");
   t.exists = true;
   std::size_t entries = 0;
-  bool ours = true;
+  bool ours = true, index = false;
   for (fs::directory_iterator it(t.dir, ec), end; !ec && it != end && entries <= 2; it.increment(ec)) {
     ++entries;
     const std::string name = it->path().filename().string();
+    index |= name == "index.html" && it->is_regular_file();
     ours &= (name == "index.html" && it->is_regular_file()) || (name == "frames" && it->is_directory());
   }
-  if (ec) throw InputError("--html " + arg + ": cannot read the directory (" + ec.message() + ")");
+  if (ec) throw InputError(option + " " + arg + ": cannot read the directory (" + ec.message() + ")");
   t.empty = entries == 0;
-  if (!t.empty && (!ours || entries != 2))
-    throw InputError("--html " + arg +
-                     " holds files other than an earlier export (index.html and frames/); refusing to replace it");
+  if (!t.empty && (!ours || !index || entries > 2))
+    throw InputError(option + " " + arg +
+                     " holds files other than an earlier export (index.html, and frames/); refusing to replace it");
   return t;
 }
 
@@ -61,7 +66,7 @@ class TempDir {
   TempDir(const Target& t, const std::string& arg) {
     std::string pattern = (t.parent / ("." + t.dir.filename().string() + ".tmp-XXXXXX")).string();
     if (!::mkdtemp(pattern.data()))
-      throw InputError("--html " + arg + ": cannot write in " + t.parent.string() + " (" + std::strerror(errno) + ")");
+      throw InputError(t.option + " " + arg + ": cannot write in " + t.parent.string() + " (" + std::strerror(errno) + ")");
     path_ = pattern;
     // mkdtemp makes it 0700; the page is made to be served, so it takes the mode mkdir would give it.
     const mode_t mask = ::umask(0);
@@ -82,17 +87,17 @@ class TempDir {
     if (t.exists && !t.empty) {
       const fs::path old = path_.string() + ".old";
       fs::rename(t.dir, old, ec);
-      if (ec) throw InputError("--html " + arg + ": cannot move the earlier export aside (" + ec.message() + ")");
+      if (ec) throw InputError(t.option + " " + arg + ": cannot move the earlier export aside (" + ec.message() + ")");
       fs::rename(path_, t.dir, ec);
       if (ec) {
         std::error_code back;
         fs::rename(old, t.dir, back);
-        throw InputError("--html " + arg + ": cannot move the page into place (" + ec.message() + ")");
+        throw InputError(t.option + " " + arg + ": cannot move the page into place (" + ec.message() + ")");
       }
       fs::remove_all(old, ec);
     } else {
       fs::rename(path_, t.dir, ec);
-      if (ec) throw InputError("--html " + arg + ": cannot move the page into place (" + ec.message() + ")");
+      if (ec) throw InputError(t.option + " " + arg + ": cannot move the page into place (" + ec.message() + ")");
     }
     path_.clear();
   }
@@ -152,12 +157,11 @@ Json page_data(const Lesson& lesson, const TraceModel& run, std::size_t from, st
           {"steps", std::move(steps)}};
 }
 
-}  // namespace
-
-int run_lesson_export(const ExportOptions& o) {
+// The flip-book (--frames).
+int export_frames(const ExportOptions& o) {
   const auto [w, h] = parse_frame_size(o.size);
   const Lesson lesson = load_lesson(o.lesson);
-  const Target target = check_target(o.html_dir);
+  const Target target = check_target(o.frames_dir, "--frames");
 
   Budget budget;
   budget.max_steps = o.max_steps;
@@ -184,9 +188,9 @@ int run_lesson_export(const ExportOptions& o) {
   const Json data = page_data(lesson, *session.model(0), from, to, w, h);
   const std::string page = lesson_page(lesson.title, lesson.intro.empty() ? std::string() : markdown_html(lesson.intro), data);
 
-  TempDir temp(target, o.html_dir);
+  TempDir temp(target, o.frames_dir);
   if (std::error_code ec; !fs::create_directory(temp.path() / "frames", ec))
-    throw InputError("--html " + o.html_dir + ": cannot create frames/ (" + ec.message() + ")");
+    throw InputError("--frames " + o.frames_dir + ": cannot create frames/ (" + ec.message() + ")");
   for (std::size_t s = from; s <= to; ++s) {
     app.restart_view();  // each frame as `stepwise render --lesson --step s` draws it, from the opening view
     session.set_step(s);
@@ -196,12 +200,72 @@ int run_lesson_export(const ExportOptions& o) {
     std::ofstream f(temp.path() / "index.html", std::ios::binary);
     f << page;
     f.close();
-    if (!f) throw InputError("--html " + o.html_dir + ": cannot write index.html");
+    if (!f) throw InputError("--frames " + o.frames_dir + ": cannot write index.html");
   }
-  temp.commit(target, o.html_dir);
+  temp.commit(target, o.frames_dir);
   std::cerr << "stepwise: wrote " << (to - from + 1) << " frames (steps " << from << ".." << to << ") and index.html to "
             << target.dir.string() << '\n';
   return 0;
+}
+
+// A file's whole text; InputError naming it if it cannot be read.
+std::string read_text(const fs::path& file, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw InputError(what + " " + file.string() + " cannot be read");
+  return text;
+}
+
+// The app's page opened on the lesson (--html): the built page with the lesson's own files (the
+// lesson and what it includes, at their paths relative to it) in its stepwiseLesson (shell.html).
+int export_app_page(const ExportOptions& o) {
+  const Lesson lesson = load_lesson(o.lesson);  // a bad lesson is refused before anything is written
+  if (o.from) {
+    Session session;
+    Budget budget;
+    budget.max_steps = o.max_steps;
+    session.set_budget(budget);
+    if (!session.open_lesson(o.lesson)) throw InputError(session.error());
+    if (*o.from >= session.steps())
+      throw InputError("--from " + std::to_string(*o.from) + " is past the last step (" + std::to_string(session.steps() - 1) + ")");
+  }
+  const Target target = check_target(o.html_dir, "--html");
+  const fs::path page_file = web_page_file();
+  if (!fs::is_regular_file(page_file))
+    throw InputError("the browser page " + page_file.string() + " is not built: run scripts/web.sh (or use --frames DIR)");
+  std::string page = read_text(page_file, "the browser page");
+  const std::string marker = "var stepwiseLesson = null;";
+  const std::size_t at = page.find(marker);
+  if (at == std::string::npos) throw InputError(page_file.string() + " is not stepwise's browser page (no stepwiseLesson)");
+  const fs::path lesson_dir = fs::absolute(o.lesson).parent_path();
+  const std::string root = "/stepwise/lessons/";
+  Json files = Json::array({{{"path", root + fs::path(o.lesson).filename().string()}, {"text", read_text(o.lesson, "the lesson")}}});
+  for (const fs::path& inc : lesson.includes)
+    files.push_back({{"path", root + fs::relative(fs::absolute(inc), lesson_dir).generic_string()}, {"text", read_text(inc, "the included file")}});
+  const Json carried = {{"files", files}, {"lesson", files[0]["path"]}, {"step", o.from ? Json(*o.from) : Json()}};
+  page.replace(at, marker.size(), "var stepwiseLesson = " + script_safe_json(carried) + ";");
+
+  TempDir temp(target, o.html_dir);
+  {
+    std::ofstream f(temp.path() / "index.html", std::ios::binary);
+    f << page;
+    f.close();
+    if (!f) throw InputError("--html " + o.html_dir + ": cannot write index.html");
+  }
+  temp.commit(target, o.html_dir);
+  std::cerr << "stepwise: wrote " << (target.dir / "index.html").string() << " (" << page.size() / 1024
+            << " KiB): the app, opened on " << lesson.title << '\n';
+  return 0;
+}
+
+}  // namespace
+
+fs::path web_page_file() { return data_root() / "out" / "web" / "stepwise.html"; }
+
+int run_lesson_export(const ExportOptions& o) {
+  if (!o.frames_dir.empty()) return export_frames(o);
+  if (o.html_dir.empty()) throw InputError("lesson export: give --html DIR (the app's page) or --frames DIR (the flip-book)");
+  return export_app_page(o);
 }
 
 }  // namespace sw::vis

@@ -76,7 +76,7 @@ std::string component_text(const TraceModel& run, const VarRecord& v, std::uint3
   // A float's own shortest digits (the trace writes the double it widens to, up to 17 digits).
   if (!v.is_int && run.numeric() == Numeric::f32 && std::isfinite(d) && double(float(d)) == d) {
     char buf[32];
-    text.assign(buf, std::to_chars(buf, buf + sizeof buf, float(d)).ptr);
+    text.assign(buf, shortest_chars(buf, buf + sizeof buf, float(d)));
   }
   if (const int digits = format_digits(format); digits && !v.is_int) return decimal(d, digits);
   if (format == "exact" || text.find('/') == std::string::npos) return text;

@@ -166,7 +166,7 @@ std::string Session::apply_other_input(const Json& other_input) {
 namespace {
 
 Json rational_json(const Rational& r) {
-  if (r.get_den() == 1 && abs(r) < Rational(1L << 53)) return Json(r.get_num().get_si());
+  if (r.get_den() == 1 && abs(r) < Rational(std::int64_t(1) << 53)) return Json(num::int64_of(r.get_num()));
   return Json(num::to_text(r));
 }
 
@@ -282,23 +282,32 @@ bool Session::set_quiz(bool on) {
 
 std::optional<Grade> Session::answer(const Json& a) {
   const std::optional<Grade> g = quiz_.answer(step(), a);
-  if (const std::filesystem::path file = answers_file(); g && !file.empty()) {
-    try {
-      std::filesystem::create_directories(answers_dir_);
-      OutputFile out(file);
-      out.stream() << answers_jsonl(quiz_, student_);
-      out.commit();
-      answers_error_.clear();
-    } catch (const std::exception& e) {
-      answers_error_ = "cannot save the answers: " + one_line(e.what(), 200);
-    }
-  }
+  if (g) save_answers();
   return g;
+}
+
+void Session::save_answers() {
+  const std::filesystem::path file = answers_file();
+  if (file.empty()) return;
+  try {
+    std::filesystem::create_directories(answers_dir_);
+    OutputFile out(file);
+    out.stream() << answers_jsonl(quiz_, student_);
+    out.commit();
+    answers_error_.clear();
+  } catch (const std::exception& e) {
+    answers_error_ = "cannot save the answers: " + one_line(e.what(), 200);
+  }
 }
 
 void Session::save_answers_in(std::filesystem::path dir, std::string student) {
   answers_dir_ = std::move(dir);
   student_ = std::move(student);
+}
+
+void Session::set_student(std::string student) {
+  student_ = std::move(student);
+  if (quiz_.score().second > 0) save_answers();  // the saved answers carry the new name at once
 }
 
 std::filesystem::path Session::answers_file() const {

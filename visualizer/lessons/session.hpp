@@ -131,6 +131,8 @@ class Session {
   std::filesystem::path answers_file() const;
   const std::string& answers_error() const { return answers_error_; }
   const std::string& student() const { return student_; }
+  // The name the answers are saved under, from now on and in the file already saved.
+  void set_student(std::string student);
 
   // [SECTION] the lessons of the manifest (session_lessons.cpp)
   const std::vector<std::filesystem::path>& lessons() const { return lessons_; }
@@ -147,6 +149,7 @@ class Session {
   std::string load(const Run& run, Comparison compare, bool keep_view, const std::optional<Run>& other = {});
   std::string rerun(const Run& run, const std::optional<Run>& other = {});  // keeps the relative step
   std::optional<Run> same_other(Numeric numeric, const Comparison& compare) const;
+  void save_answers();  // the quiz's answers so far into answers_file(), if answers are saved
 
   std::filesystem::path lessons_dir_;
   std::vector<std::filesystem::path> lessons_;

@@ -6,27 +6,32 @@
 
 namespace sw::vis {
 
-AccuracyRun::AccuracyRun(const Algorithm& alg, std::string set, int repeats) : alg_(&alg), set_(std::move(set)), thread_([this, repeats] { work(repeats); }) {}
+AccuracyRun::AccuracyRun(const Algorithm& alg, std::string set, int repeats) : alg_(&alg), repeats_(repeats), set_(std::move(set)) {
+  if constexpr (kHaveThreads) thread_ = std::thread([this] {
+      while (advance()) {}  // bounded: one call a mode
+    });
+}
 
 AccuracyRun::~AccuracyRun() {
   stop_ = true;
   if (thread_.joinable()) thread_.join();
 }
 
-void AccuracyRun::work(int repeats) {
+bool AccuracyRun::advance() {
+  if (finished_) return false;
   try {
-    std::vector<std::string> names = alg_->bench_sets();
-    std::string set;
-    {
+    if (!started_) {
+      std::vector<std::string> names = alg_->bench_sets();
       std::lock_guard lock(mu_);
       sets_ = names;
       if (set_.empty() && !names.empty()) set_ = names.front();
-      set = set_;
+      started_ = true;
     }
-    for (Numeric n : alg_->numerics) {  // one mode at a time: stop_ is honoured between modes
-      if (stop_) break;
+    // One mode at a time: stop_ is honoured between modes.
+    if (!stop_ && done_ < alg_->numerics.size()) {
+      Numeric n = alg_->numerics[done_];
       BenchOptions options;  // the default's cases (at most kQuickCases a set)
-      options.repeats = repeats, options.only_set = set;
+      options.repeats = repeats_, options.only_set = set();
       std::vector<BenchRow> got = alg_->bench(std::span(&n, 1), options);
       {
         std::lock_guard lock(mu_);
@@ -37,8 +42,11 @@ void AccuracyRun::work(int repeats) {
   } catch (const std::exception& e) {
     std::lock_guard lock(mu_);
     error_ = e.what();
+    finished_ = true;
+    return false;
   }
-  finished_ = true;
+  if (stop_ || done_ == alg_->numerics.size()) finished_ = true;
+  return !finished_;
 }
 
 std::vector<BenchRow> AccuracyRun::rows() const {
@@ -79,6 +87,7 @@ void AccuracyWindow::draw(const Algorithm* alg, bool* open) {
     ImGui::End();
     return;
   }
+  if (!kHaveThreads) run_->advance();  // a mode a frame
   const AccuracyRun& r = *run_;
   const std::string set = r.set();
   ImGui::TextUnformatted("Bench set");

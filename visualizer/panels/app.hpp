@@ -37,6 +37,8 @@ class App {
   bool presenting() const { return chrome_.presenting; }
   // The Accuracy window (a short bench of the open algorithm, then its chart): shown or not.
   void set_accuracy_open(bool open) { chrome_.accuracy_open = open; }
+  // The host's way to hand a file to the person (Chrome::offer_file).
+  void set_file_offer(std::function<void(const std::filesystem::path&)> offer) { chrome_.offer_file = std::move(offer); }
   const AccuracyWindow& accuracy() const { return accuracy_; }
 
   // Test hooks: what the last frame showed.

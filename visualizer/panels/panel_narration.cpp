@@ -100,7 +100,7 @@ NarrationMarks draw_narration(Session& s, const Chrome& c, const PanelRect& r) {
     lesson = s.lesson();
     // The question first, then the step's text, then the intro: what the step says stays in view
     // on a small window, above a long introduction.
-    if (s.quiz()) draw_quiz(s, c), marks.quiz_bottom = ImGui::GetItemRectMax().y;
+    if (s.quiz()) draw_quiz(s, c, &marks.quiz_widgets), marks.quiz_bottom = ImGui::GetItemRectMax().y;
     const std::size_t step = s.shown_step();
     marks.text_y = ImGui::GetCursorScreenPos().y;
     if (const TraceModel* a = s.model(0)) {

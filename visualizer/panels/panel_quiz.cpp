@@ -3,20 +3,50 @@
 // (lessons/quiz_session.hpp): its questions, the gate that stops stepping, the answers.
 #include <algorithm>
 #include "lessons/grading.hpp"
-#include "panels/panels.hpp"
+#include "panels/panels.hpp"  // before imgui_stdlib.h, which needs imgui.h first
+#include <imgui_stdlib.h>
 
 namespace sw::vis {
 
-void draw_quiz(Session& s, const Chrome& c) {
+namespace {
+
+// The last item's rectangle, noted in *marks under `label`.
+void mark(const std::string& label, std::vector<WidgetMark>* marks) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  marks->push_back({label, {a.x, a.y, b.x, b.y}});
+}
+// ImGui::Button or SmallButton, its rectangle noted in *marks.
+bool marked_button(const std::string& label, std::vector<WidgetMark>* marks, bool small = false) {
+  const bool pressed = small ? ImGui::SmallButton(label.c_str()) : ImGui::Button(label.c_str());
+  mark(label, marks);
+  return pressed;
+}
+
+}  // namespace
+
+void draw_quiz(Session& s, const Chrome& c, std::vector<WidgetMark>* marks) {
   ImGui::Separator();
   const QuizSession& quiz = s.quiz_session();
   const std::size_t step = s.step();
   const auto [right, asked] = quiz.score();
   const std::size_t n = quiz.questions().size();
   ImGui::TextColored(theme::kDim, "Quiz: %d of %d right, %zu %s in this lesson", right, asked, n, n == 1 ? "question" : "questions");
+  if (!s.answers_file().empty()) {  // answers are saved: under the name typed here
+    static std::string name;  // the field's text while it is edited (one quiz panel)
+    if (!ImGui::IsAnyItemActive()) name = s.student();
+    ImGui::SetNextItemWidth(12 * ImGui::GetFontSize());
+    const bool edited = ImGui::InputTextWithHint("Your name##student", "the name your answers carry", &name);
+    mark("Your name", marks);
+    if (edited && !name.empty()) s.set_student(name);
+  }
   if (!s.answers_error().empty()) ImGui::TextColored(theme::kError, "%s", s.answers_error().c_str());
-  else if (const auto file = s.answers_file(); !file.empty() && asked > 0)
+  else if (const auto file = s.answers_file(); !file.empty() && asked > 0) {
     ImGui::TextColored(theme::kDim, "Saved as %s in %s", printable_name(s.student()).c_str(), file.string().c_str());
+    if (c.offer_file) {
+      ImGui::SameLine();
+      if (marked_button("Download answers", marks, true)) c.offer_file(file);
+    }
+  }
   const QuizSession::Answered* done = quiz.answered(step);
   const Question* q = quiz.pending(step);
   const Question* at = quiz.at(step);
@@ -31,7 +61,7 @@ void draw_quiz(Session& s, const Chrome& c) {
     auto button = [&](const std::string& label, const Json& value) {
       if (!first) flow(ImGui::CalcTextSize(label.c_str()).x + 2 * ImGui::GetStyle().FramePadding.x);
       first = false;
-      if (!ImGui::Button(label.c_str())) return false;
+      if (!marked_button(label, marks)) return false;
       s.answer(value);
       return true;
     };

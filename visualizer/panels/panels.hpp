@@ -7,6 +7,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,6 +27,9 @@ struct Chrome {
   bool presenting = false;  // presentation mode (P): big fonts, no edit rows, no state panel
   bool accuracy_open = false;
   bool fit = false;  // "Fit view" (toolbar, View menu): the canvas panel fits on its next draw
+  // Where the host can hand a file to the person (the browser: a download), the quiz panel
+  // offers the saved answers through it; none on the desktop, where they are a file already.
+  std::function<void(const std::filesystem::path&)> offer_file;
 };
 
 // The toolbar: the menu bar, the algorithm and number types, the input's fields (exact x and y
@@ -114,11 +119,18 @@ void draw_state(Session& s, DiffPlot& plot, const PanelRect& r);
 // The narration: the lesson's title, the quiz (panel_quiz.cpp) when on, the section each run shows
 // at the step, then the intro; with no lesson, the algorithm's summary. Returns where the step's
 // own text starts and where the quiz ends, in screen y (NaN for what is not drawn).
+// A widget drawn this frame (a button, a text field): its label and screen rectangle (x0, y0, x1, y1).
+struct WidgetMark {
+  std::string label;
+  std::array<float, 4> rect;
+};
 struct NarrationMarks {
   float text_y = NAN, quiz_bottom = NAN;
+  std::vector<WidgetMark> quiz_widgets;  // the quiz panel's answer and download buttons, its name field
 };
 NarrationMarks draw_narration(Session& s, const Chrome& c, const PanelRect& r);
-void draw_quiz(Session& s, const Chrome& c);
+// The quiz panel; its buttons and fields go to *marks.
+void draw_quiz(Session& s, const Chrome& c, std::vector<WidgetMark>* marks);
 // Narration Markdown (lessons/markdown.hpp), laid out word by word.
 void draw_markdown(const std::string& text, const theme::Fonts& fonts);
 

@@ -1,0 +1,35 @@
+// The page's address as the app's command line (web_main.cpp): #lesson=05&step=10 is
+// --lesson 05 --step 10; a key without a value is a flag (#quiz). Values are URI-decoded.
+// A page written by `stepwise lesson export --html` carries its lesson (stepwiseLesson, shell.html):
+// its files go into the page's file system before main(), and it is the lesson opened unless the
+// address names another.
+Module["arguments"] = (function () {
+  var args = [], named = {};
+  var hash = (typeof location !== "undefined" && location.hash) ? location.hash.substring(1) : "";
+  hash.split("&").forEach(function (part) {
+    if (!part) return;
+    var eq = part.indexOf("=");
+    var key = decodeURIComponent(eq < 0 ? part : part.substring(0, eq));
+    named[key] = true;
+    args.push("--" + key);
+    if (eq >= 0) args.push(decodeURIComponent(part.substring(eq + 1)));
+  });
+  var own = typeof stepwiseLesson === "object" ? stepwiseLesson : null;
+  if (own) {
+    // Just before main(), after the page's own files are in place (a preRun of emcc's, which the
+    // runtime runs after this one): a file of the same name (an edited lesson of the page) replaces one.
+    Module["preRun"] = (Module["preRun"] || []).concat([function () {
+      addOnPreMain(function () {
+        own.files.forEach(function (f) {
+          FS.mkdirTree(f.path.substring(0, f.path.lastIndexOf("/")));
+          FS.writeFile(f.path, f.text);
+        });
+      });
+    }]);
+    if (!named.lesson && !named.algorithm) {
+      args.unshift("--lesson", own.lesson);
+      if (own.step !== null && !named.step) args.push("--step", String(own.step));
+    }
+  }
+  return args;
+})();
