@@ -133,7 +133,7 @@ if [ -z "${EM_CACHE:-}" ] && [ ! -w "$EM_PKG_CACHE" ]; then
   [ -d "$EM_CACHE/sysroot" ] || { mkdir -p "$EM_CACHE"; cp -a "$EM_PKG_CACHE/." "$EM_CACHE/"; }
 fi
 mkdir -p "$PREFIX/include" "$PREFIX/lib" "$WORK" "$STAMPS" "$PREFIX/test"
-emcc --version | head -1
+emcc --version | sed -n 1p  # sed reads it all: head would close the pipe under emcc (BrokenPipeError)
 
 # --- helpers ----------------------------------------------------------------------------------------------
 # src_version NAME[=VERSION]: the Debian version of the source package apt-get source would fetch.
@@ -150,16 +150,16 @@ fresh_source() {
   local name=${1%%=*} dir=$WORK/${1%%=*} orig
   rm -rf "$dir"; mkdir -p "$dir"
   if ! (cd "$dir" && apt-get source -q "$1" >"$dir/source.log" 2>&1); then
-    orig=$(find "$dir" -maxdepth 1 -name '*.orig.tar.*' ! -name '*.asc' | head -1)
+    orig=$(find "$dir" -maxdepth 1 -name '*.orig.tar.*' ! -name '*.asc' -print -quit)
     if [ -n "$orig" ] && grep -q 'Failed to fetch .*\.debian\.tar\.' "$dir/source.log"; then
-      say "$name: $(grep -o 'Failed to fetch .*' "$dir/source.log" | head -1)" >&2
+      say "$name: $(grep -m1 -o 'Failed to fetch .*' "$dir/source.log")" >&2
       say "$name: building the upstream tarball $(basename "$orig") without Debian's patches" >&2
       mkdir "$dir/$name-upstream"; tar -xf "$orig" -C "$dir/$name-upstream" --strip-components=1
     else
       cat "$dir/source.log" >&2; exit 1
     fi
   fi
-  find "$dir" -mindepth 1 -maxdepth 1 -type d | head -1
+  find "$dir" -mindepth 1 -maxdepth 1 -type d -print -quit
 }
 # built NAME VERSION ARTEFACT...: true when the stamp says VERSION and every artefact exists.
 built() {
