@@ -27,16 +27,8 @@ PACKAGES=(
   clang libclang-rt-14-dev llvm-14 chromium chromium-driver python3 python3-jsonschema povray file
   emscripten nodejs dpkg-dev xz-utils m4 libboost-dev
 )
-missing=()
-for p in "${PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "setup: installing ${missing[*]}"
-  SUDO=""; [ "$(id -u)" = 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+source scripts/packages.sh
+install_missing "${PACKAGES[@]}"
 
 # The real meshes of CGAL's data set, for the bench and the mesh lessons (out/meshes).
 bash scripts/meshes.sh out/meshes >/dev/null

@@ -24,15 +24,8 @@ PACKAGES=(
   libimgui-dev libboost-dev libcgal-dev nlohmann-json3-dev libstb-dev libglm-dev libcli11-dev
   libcgal-demo fonts-dejavu-core cmake  # the meshes and fonts the page embeds; the build itself
 )
-missing=()
-for p in "${PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  say "installing ${missing[*]}"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+source "$(dirname "$0")/packages.sh"
+install_missing "${PACKAGES[@]}"
 
 # --- 2. deb-src entries, derived from the machine's own Debian entries -----------------------------------
 # Copies every enabled "deb" entry whose suite is this release's (codename, -updates, -security,

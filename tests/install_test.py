@@ -45,6 +45,15 @@ r = run([sw, "check", "w.jsonl"], cwd=elsewhere, env=env)
 check(r.returncode == 0, "installed stepwise checks that trace: " + r.stderr.strip())
 r = run([sw, "render", "--lesson", str(share / "lessons" / "18-kd-ray-mesh.md"), "--out", "mesh.png", "--size", "640x400"], cwd=elsewhere, env=env)
 check(r.returncode == 0 and (elsewhere / "mesh.png").is_file(), "installed stepwise renders the mesh lesson: " + r.stderr.strip())
+# The browser page, where scripts/web.sh has built it (test.sh does, before the tests): installed, and
+# `lesson export --html` of the installed binary starts from it.
+source = next(l.split("=", 1)[1].strip() for l in open(BUILD / "CMakeCache.txt") if l.startswith("CMAKE_HOME_DIRECTORY:"))
+if (pathlib.Path(source) / "out" / "web" / "stepwise.html").is_file():
+    check((share / "out" / "web" / "stepwise.html").is_file(), "installed share/stepwise/out/web/stepwise.html")
+    r = run([sw, "lesson", "export", str(share / "lessons" / "03-bresenham.md"), "--html", "page"], cwd=elsewhere, env=env)
+    exported = elsewhere / "page" / "index.html"
+    check(r.returncode == 0 and exported.is_file() and "stepwiseLesson = {" in exported.read_text(errors="replace"),
+          "installed stepwise exports a lesson as the app's page: " + r.stderr.strip()[-300:])
 # The app with no arguments opens the first lesson of the installed manifest (exit 0: it loaded).
 if shutil.which("xvfb-run"):
     r = run(["xvfb-run", "-a", "-s", "-screen 0 800x500x24", gui, "--size", "800x500", "--frames", "3", "--screenshot", "gui.png"],

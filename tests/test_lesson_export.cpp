@@ -27,15 +27,18 @@ std::set<std::string> names_in(const fs::path& dir) {
   return names;
 }
 
-// The page data blob of an exported index.html.
-sw::Json page_data(const fs::path& index) {
-  const std::string html = sw::testing::slurp(index);
-  const std::string open = "<script type=\"application/json\" id=\"page-data\">";
+// The JSON text of a page between the first `open` and the `close` after it.
+sw::Json json_between(const std::string& html, const std::string& open, const std::string& close) {
   const auto a = html.find(open);
   REQUIRE(a != std::string::npos);
-  const auto b = html.find("</script>", a);
+  const auto b = html.find(close, a);
   REQUIRE(b != std::string::npos);
   return sw::Json::parse(html.substr(a + open.size(), b - a - open.size()));
+}
+
+// The page data blob of an exported index.html.
+sw::Json page_data(const fs::path& index) {
+  return json_between(sw::testing::slurp(index), "<script type=\"application/json\" id=\"page-data\">", "</script>");
 }
 
 // Runs an export that must fail: exit 2, one line naming `expect`, and `dir` left as it was.
@@ -145,14 +148,7 @@ TEST_CASE("visualizer lesson export: lesson text cannot inject markup or script"
 namespace {
 
 // The stepwiseLesson object an exported page carries (visualizer/web/shell.html).
-sw::Json carried_lesson(const std::string& html) {
-  const std::string open = "var stepwiseLesson = ";
-  const auto a = html.find(open);
-  REQUIRE(a != std::string::npos);
-  const auto b = html.find(";\n", a);
-  REQUIRE(b != std::string::npos);
-  return sw::Json::parse(html.substr(a + open.size(), b - a - open.size()));
-}
+sw::Json carried_lesson(const std::string& html) { return json_between(html, "var stepwiseLesson = ", ";\n"); }
 
 }  // namespace
 

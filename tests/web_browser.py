@@ -55,6 +55,16 @@ def open_page(d, page, fragment=""):
     return wait_state(d, "the page at #" + fragment)
 
 
+def follow_link(d, fragment, lesson):
+    """A link within the running page (a new fragment): it opens without a reload, so a mark left on
+    the page's window survives it. Returns the state once the page shows `lesson`."""
+    d.js("window.swSamePage = true; location.hash = arguments[0];", fragment)
+    st = wait_state(d, "#" + fragment, lambda s: s["lesson"] == lesson)
+    if d.js("return window.swSamePage === true;") is not True:
+        fail("#%s reloaded the page (a link within it should open in place)" % fragment)
+    return st
+
+
 def components(value):
     """A trace variable's value as its list of components (scalars, vectors, colours, lists)."""
     if isinstance(value, dict):
@@ -248,6 +258,11 @@ def main():
         print("stepwise quiz graded the downloaded answers: %s" % json.dumps(graded)[:300])
         if graded.get("student") != "Ada L" or graded.get("answered") != answered:
             fail("the graded file says %s, not %d answers by 'Ada L'" % (json.dumps(graded)[:300], answered))
+        # A link to another lesson's quiz opens in the page, and the typed name stays.
+        st = follow_link(d, "lesson=04&quiz", "04-float-drift.md")
+        if not st["quiz"] or st["student"] != "Ada L" or st["error"]:
+            fail("after a link to #lesson=04&quiz: quiz %s, student %r, error %r" % (st["quiz"], st["student"], st["error"]))
+        print("a link to #lesson=04&quiz opened in the page, the name %r kept" % st["student"])
 
         # A lesson handed out as one file: `stepwise lesson export --html` opens on it, at --from.
         exported = os.path.join(work, "exported")
@@ -262,13 +277,15 @@ def main():
 
         # Every lesson opens; each quiz takes an answer (a button, or a click on the canvas for a
         # pixel), its file downloads and `stepwise quiz` grades it.
+        # One fresh page, then a link each (as a course page's links would).
         quizzes = 0
-        for entry in manifest:
+        for k, entry in enumerate(manifest):
             number = os.path.basename(entry).split("-")[0]
             lesson_file = os.path.join(source, "lessons", os.path.basename(entry))
             with open(lesson_file, encoding="utf-8") as f:
                 has_quiz = "\n## quiz " in f.read()
-            st = open_page(d, page, "lesson=" + number + ("&quiz" if has_quiz else ""))
+            fragment = "lesson=" + number + ("&quiz" if has_quiz else "")
+            st = open_page(d, page, fragment) if k == 0 else follow_link(d, fragment, os.path.basename(entry))
             if st["lesson"] != os.path.basename(entry) or st["steps"] == 0 or st["error"]:
                 fail("#lesson=%s shows %s with %d steps, error %r" % (number, st["lesson"], st["steps"], st["error"]))
             if has_quiz:

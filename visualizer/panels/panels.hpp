@@ -116,14 +116,14 @@ class ListingPanel {
 // the |difference| plot.
 void draw_state(Session& s, DiffPlot& plot, const PanelRect& r);
 
-// The narration: the lesson's title, the quiz (panel_quiz.cpp) when on, the section each run shows
-// at the step, then the intro; with no lesson, the algorithm's summary. Returns where the step's
-// own text starts and where the quiz ends, in screen y (NaN for what is not drawn).
 // A widget drawn this frame (a button, a text field): its label and screen rectangle (x0, y0, x1, y1).
 struct WidgetMark {
   std::string label;
   std::array<float, 4> rect;
 };
+// The narration: the lesson's title, the quiz (panel_quiz.cpp) when on, the section each run shows
+// at the step, then the intro; with no lesson, the algorithm's summary. Returns where the step's
+// own text starts and where the quiz ends, in screen y (NaN for what is not drawn).
 struct NarrationMarks {
   float text_y = NAN, quiz_bottom = NAN;
   std::vector<WidgetMark> quiz_widgets;  // the quiz panel's answer and download buttons, its name field

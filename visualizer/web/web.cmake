@@ -33,7 +33,7 @@ endforeach()
 target_link_options(stepwise-web PRIVATE
   -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=64MB
-  -sEXPORTED_FUNCTIONS=_main,_sw_state -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS
+  -sEXPORTED_FUNCTIONS=_main,_sw_state,_sw_open -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,FS
   -sMINIFY_HTML=0  # Debian's emcc 3.1.6 passes htmlmin a list where a string goes, and fails
   "SHELL:--shell-file ${CMAKE_CURRENT_SOURCE_DIR}/web/shell.html"
   "SHELL:--pre-js ${CMAKE_CURRENT_SOURCE_DIR}/web/pre.js"

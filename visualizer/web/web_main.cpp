@@ -5,7 +5,9 @@
 //
 // The page (shell.html, pre.js) turns its URL fragment into the command line: #lesson=05&step=10
 // is --lesson 05 --step 10, and any other key=value is --key value (algorithm, input, numeric,
-// compare, quiz, student). Quiz answers are saved in /answers and offered as a download.
+// compare, quiz, student). A new fragment opens what it names in the running page (sw_open): no
+// reload, and the name the student typed stays. Quiz answers are saved in /answers and offered as
+// a download.
 // For tests, the page's JavaScript can ask sw_state() for what is shown, as JSON.
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -16,6 +18,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 #include "headless/gl_texture.hpp"
 #include "host_options.hpp"
 #include "panels/app.hpp"
@@ -29,6 +32,7 @@ struct Host {
   GLFWwindow* window = nullptr;
   GlTextureHost textures;
   std::unique_ptr<App> app;
+  double scale = 1;   // the fonts' scale, fixed at the start
   std::string state;  // sw_state()'s last answer, alive until the next call
 };
 Host* host = nullptr;
@@ -66,7 +70,60 @@ void frame() {
   EM_ASM(Module.swFrames = (Module.swFrames | 0) + 1);  // frames drawn: the page's test waits for the first
 }
 
+// The page's arguments (pre.js) as the host's options, with the browser's own answers directory,
+// and on an error the one line the app shows.
+struct PageOptions {
+  HostOptions options;
+  std::string error;
+};
+PageOptions parse_page_arguments(const std::vector<std::string>& args) {
+  CLI::App cli{"stepwise-web: step through classic graphics algorithms"};
+  PageOptions p;
+  add_host_options(cli, p.options);
+  p.options.answers_dir = "/answers";
+  std::vector<const char*> argv{"stepwise-web"};
+  for (const std::string& a : args) argv.push_back(a.c_str());
+  try {
+    cli.parse(int(argv.size()), argv.data());
+    check_scale(p.options.scale);
+  } catch (const CLI::ParseError& e) {
+    p.error = std::string("the page's address: ") + e.what();
+  } catch (const InputError& e) {
+    p.error = std::string("the page's address: ") + e.what();
+  }
+  return p;
+}
+
+// Opens what the options name, or the first lesson with the error shown.
+void open_page(Session& session, const PageOptions& p) {
+  if (!p.error.empty()) {
+    session.open_first_lesson();
+    session.show_error(p.error);
+  } else if (!open_session(session, p.options)) {
+    std::cerr << "stepwise-web: could not load: " << session.error() << '\n';
+  }
+}
+
 }  // namespace
+
+// A new fragment in the running page (pre.js): args_json is pre.js's arguments as a JSON
+// array of strings. Returns 1 where only a fresh page can honour them (another --scale: the fonts
+// are built at the start), else 0.
+extern "C" EMSCRIPTEN_KEEPALIVE int sw_open(const char* args_json) {
+  if (!host || !host->app) return 1;  // main() has not opened the app
+  std::vector<std::string> args;
+  const Json parsed = Json::parse(args_json, nullptr, false);
+  if (parsed.is_array())
+    for (const Json& a : parsed)
+      if (a.is_string()) args.push_back(a.get<std::string>());
+  PageOptions p = parse_page_arguments(args);
+  if (p.error.empty() && p.options.scale != host->scale) return 1;
+  if (p.options.student.empty()) p.options.student = host->app->session().student();  // the name typed stays
+  host->app->set_presenting(p.options.present);
+  host->app->session().set_budget(p.options.budget);
+  open_page(host->app->session(), p);
+  return 0;
+}
 
 // What the app shows, as one JSON object: the lesson file (or ""), the algorithm, the number type,
 // the step shown and the trace's length, and each variable's latest value at that step as its
@@ -112,25 +169,16 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sw_state() {
 }
 
 int main(int argc, char** argv) {
-  CLI::App cli{"stepwise-web: step through classic graphics algorithms"};
-  HostOptions o;
-  add_host_options(cli, o);
-  o.answers_dir = "/answers", o.student = "student";
-  std::string bad_arguments;
-  try {
-    cli.parse(argc, argv);
-    check_scale(o.scale);
-  } catch (const CLI::ParseError& e) {
-    bad_arguments = std::string("the page's address: ") + e.what();
-  } catch (const InputError& e) {
-    bad_arguments = std::string("the page's address: ") + e.what();
-  }
+  PageOptions page = parse_page_arguments(std::vector<std::string>(argv + 1, argv + argc));
+  if (page.options.student.empty()) page.options.student = "student";
+  const HostOptions& o = page.options;
   if (!glfwInit()) {
     std::cerr << "stepwise-web: error: GLFW could not start\n";
     return 2;
   }
   const int width = EM_ASM_INT(return window.innerWidth), height = EM_ASM_INT(return window.innerHeight);
   host = new Host;  // lives as long as the page
+  host->scale = page.error.empty() ? o.scale : 1;  // a bad --scale is reported, not used
   host->window = glfwCreateWindow(width, height, "stepwise", nullptr, nullptr);
   if (!host->window) {
     std::cerr << "stepwise-web: error: no WebGL 2 context\n";
@@ -139,21 +187,15 @@ int main(int argc, char** argv) {
   glfwMakeContextCurrent(host->window);
   emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, EM_FALSE, on_resize);
   ImGui::CreateContext();
-  const theme::Fonts fonts = theme::setup_style(float(o.scale));
+  const theme::Fonts fonts = theme::setup_style(float(host->scale));
   ImGui_ImplGlfw_InitForOpenGL(host->window, true);
   ImGui_ImplOpenGL3_Init("#version 300 es");
   host->app = std::make_unique<App>(host->textures, fonts);
   App& app = *host->app;
   app.set_presenting(o.present);
   app.set_file_offer([](const std::filesystem::path& file) { offer_download(file.c_str(), file.filename().c_str()); });
-  Session& session = app.session();
-  session.set_budget(o.budget);
-  if (!bad_arguments.empty()) {
-    session.open_first_lesson();
-    session.show_error(bad_arguments);
-  } else if (!open_session(session, o)) {
-    std::cerr << "stepwise-web: could not load: " << session.error() << '\n';
-  }
+  app.session().set_budget(o.budget);
+  open_page(app.session(), page);
   emscripten_set_main_loop(frame, 0, false);  // main returns; the page calls frame() from now on
   return 0;
 }
