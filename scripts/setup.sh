@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages stepwise needs (only those missing), then configures and builds.
 # Idempotent: a second run installs nothing and rebuilds only what changed.
-# Usage: scripts/setup.sh [--app] [build-dir] [extra cmake args...]
-#   --app  only what the app and the CLI need: their packages, and the targets stepwise (which
-#          brings stepwise-gl, its renderer) and stepwise-gui (scripts/run.sh, the fast first picture). Without it: every package (tests,
-#          peers, benches, the sanitizer job's clang) and every target.
+# Usage: scripts/setup.sh [--app | --packages] [build-dir] [extra cmake args...]
+#   --app       only what the app and the CLI need: their packages, and the targets stepwise (which
+#               brings stepwise-gl, its renderer) and stepwise-gui (scripts/run.sh, the fast first picture). Without it: every package (tests,
+#               peers, benches, the sanitizer job's clang) and every target.
+#   --packages  every package and the meshes, no build (scripts/test.sh, before its two builds).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-APP=0
+APP=0 PACKAGES_ONLY=0
 if [ "${1:-}" = --app ]; then APP=1; shift; fi
+if [ "${1:-}" = --packages ]; then PACKAGES_ONLY=1; shift; fi
 
 # The app and the CLI: compilers, GMP/MPFR, CGAL (the exact oracle inside the runtime), JSON and
 # CLI parsing, ImGui with GLFW and OSMesa, GIF and Markdown, the fonts, and CGAL's meshes.
@@ -32,6 +34,7 @@ install_missing "${PACKAGES[@]}"
 
 # The real meshes of CGAL's data set, for the bench and the mesh lessons (out/meshes).
 bash scripts/meshes.sh out/meshes >/dev/null
+((PACKAGES_ONLY)) && exit 0
 
 BUILD=${1:-build}
 shift || true
