@@ -7,7 +7,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/web-deps.sh
 bash scripts/meshes.sh out/meshes >/dev/null  # the meshes lessons and scenes name
-export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 BUILD=${1:-build-web}
 start=$SECONDS
 emcmake cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null

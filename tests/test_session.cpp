@@ -7,6 +7,7 @@
 #include <fstream>
 #include "lessons/grading.hpp"
 #include "lessons/session.hpp"
+#include "host_options.hpp"
 #include "source_paths.hpp"
 
 using namespace sw;
@@ -313,4 +314,53 @@ TEST_CASE("session: the timeline steps, seeks, steps over nested calls and plays
   s.jump_and_focus(7);
   CHECK_FALSE(s.animating());
   CHECK(s.take_focus() == std::optional<std::size_t>(7));
+}
+
+// What both window hosts open from their options (visualizer/host_options.cpp): a lesson by its
+// manifest number; a lesson's run in another number type or with another input keeps the lesson
+// and its comparison; --algorithm opens no lesson; a bad option leaves one line in error().
+TEST_CASE("session: the hosts' options open a lesson by number and keep it across --numeric and --input", "[session]") {
+  const auto open = [](Session& s, HostOptions o) { return open_session(s, o); };
+  SECTION("--lesson 04 --numeric double: lesson 04 (float against exact), its run in double, still against exact") {
+    Session s(kLessons);
+    HostOptions o;
+    o.lesson = "04", o.numeric = "double";
+    REQUIRE(open(s, o));
+    REQUIRE(s.lesson());
+    CHECK(s.lesson()->path.filename() == "04-float-drift.md");
+    CHECK(s.numeric() == Numeric::f64);
+    REQUIRE(s.comparison().numeric);
+    CHECK(*s.comparison().numeric == Numeric::exact);
+  }
+  SECTION("--lesson 03 --input: the lesson stays, with the new input") {
+    Session s(kLessons);
+    HostOptions o;
+    o.lesson = "03", o.input = R"({"p0":[0,0],"p1":[7,3]})";
+    REQUIRE(open(s, o));
+    REQUIRE(s.lesson());
+    CHECK(s.lesson()->path.filename() == "03-bresenham.md");
+    CHECK(s.input() == Json::parse(o.input));
+  }
+  SECTION("--algorithm: no lesson, the algorithm's example in double unless told") {
+    Session s(kLessons);
+    HostOptions o;
+    o.algorithm = "bresenham-line";
+    REQUIRE(open(s, o));
+    CHECK_FALSE(s.lesson());
+    CHECK(s.algorithm() == &find_algorithm("bresenham-line"));
+    CHECK(s.numeric() == Numeric::f64);
+  }
+  SECTION("a number that names no manifest lesson, and an unknown number type, fail with one line") {
+    Session s(kLessons);
+    HostOptions o;
+    o.lesson = "99";
+    CHECK_FALSE(open(s, o));
+    CHECK_FALSE(s.error().empty());
+    Session t(kLessons);
+    HostOptions p;
+    p.lesson = "04", p.numeric = "quad";
+    CHECK_FALSE(open(t, p));
+    CHECK(t.error().find("quad") != std::string::npos);
+    CHECK(t.error().find('\n') == std::string::npos);
+  }
 }

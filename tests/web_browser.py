@@ -222,8 +222,8 @@ def main():
 
         # Exact arithmetic, and the state against the trace.
         st = open_page(d, page, "lesson=%s&numeric=exact" % manifest[0].split("-")[0])
-        if st["numeric"] != "exact" or st["error"]:
-            fail("#numeric=exact shows %s, error %r" % (st["numeric"], st["error"]))
+        if st["numeric"] != "exact" or st["lesson"] != os.path.basename(manifest[0]) or st["error"]:
+            fail("#lesson=..&numeric=exact shows %s in lesson %r, error %r (the lesson should stay open)" % (st["numeric"], st["lesson"], st["error"]))
         for number, step in (("01", 12), ("03", 9), ("05", 4)):
             n = check_against_trace(d, page, stepwise, number, step, work)
             print("lesson %s at step %d: %d variables as stepwise trace writes them" % (number, step, n))

@@ -38,20 +38,31 @@ bool open_session(Session& session, const HostOptions& o) {
     const bool opened = numbered ? session.open_manifest_lesson(*numbered) : o.lesson.empty() ? session.open_first_lesson() : session.open_lesson(o.lesson);
     if (!opened) return false;
   }
-  if (!o.algorithm.empty() || !o.numeric.empty() || !o.compare.empty()) {
-    try {
-      // --algorithm with its --input (or example); or the lesson's run in other number types.
-      const TraceModel* m = session.model(0);
-      const Algorithm& alg = !o.algorithm.empty() || !m ? find_algorithm(o.algorithm.empty() ? "dda-line" : o.algorithm) : m->algorithm();
-      const Json input = !o.input.empty() ? read_input_arg(o.input) : m && &m->algorithm() == &alg ? m->input() : parse_json_text(alg.example, "example");
-      const Numeric n = !o.numeric.empty() ? parse_numeric_for(alg, o.numeric) : m && &m->algorithm() == &alg ? m->numeric() : parse_numeric_for(alg, "double");
+  try {
+    if (!o.algorithm.empty()) {  // --algorithm with its --input, or its example
+      const Algorithm& alg = find_algorithm(o.algorithm);
+      const Json input = !o.input.empty() ? read_input_arg(o.input) : parse_json_text(alg.example, "example");
+      const Numeric n = parse_numeric_for(alg, !o.numeric.empty() ? o.numeric : "double");
       Comparison cmp;
       if (!o.compare.empty()) cmp = parse_comparison(alg, o.compare, n);
       if (!session.open_algorithm(alg, input, n, cmp)) return false;
-    } catch (const InputError& e) {
-      session.show_error(e.what());
-      return false;
+    } else {
+      // The lesson stays open, its narration with it: its run with another --input, or in other
+      // number types (with its own comparison unless --compare names one).
+      if (!o.input.empty())
+        if (const std::string err = session.apply_input(read_input_arg(o.input)); !err.empty()) {
+          session.show_error(err);
+          return false;
+        }
+      if (const TraceModel* m = session.model(0); m && (!o.numeric.empty() || !o.compare.empty())) {
+        const Numeric n = !o.numeric.empty() ? parse_numeric_for(m->algorithm(), o.numeric) : m->numeric();
+        const Comparison cmp = !o.compare.empty() ? parse_comparison(m->algorithm(), o.compare, n) : session.comparison();
+        if (!session.set_numerics(n, cmp)) return false;
+      }
     }
+  } catch (const InputError& e) {
+    session.show_error(e.what());
+    return false;
   }
   if (!o.answers_dir.empty()) {
     const char* user = std::getenv("USER");

@@ -1,8 +1,11 @@
 # stepwise-web: the app for the browser, one self-contained page (scripts/web.sh writes it to
 # out/web/stepwise.html). Included by visualizer/CMakeLists.txt in the emscripten build.
-add_executable(stepwise-web web/web_main.cpp web/stb.cpp host_options.cpp headless/gl_texture.cpp)
+add_executable(stepwise-web web/web_main.cpp web/stb.cpp headless/gl_texture.cpp)
 set_source_files_properties(web/stb.cpp PROPERTIES COMPILE_OPTIONS -w)  # third-party code
 set_target_properties(stepwise-web PROPERTIES SUFFIX ".html")
+# emcc's JavaScript optimizer needs Debian's node modules (acorn) under any node: the link sets
+# their folder, so a plain `cmake --build` works as scripts/web.sh does.
+set_target_properties(stepwise-web PROPERTIES CXX_LINKER_LAUNCHER "${CMAKE_COMMAND};-E;env;NODE_PATH=/usr/share/nodejs")
 target_link_libraries(stepwise-web PRIVATE sw_panels CLI11::CLI11)
 # The data the app reads, at the paths it reads them from: the built-in data root /stepwise
 # (runtime/data_root.cpp) and the fonts' own folder (panels/theme.cpp). Lessons' pictures are not
