@@ -9,7 +9,7 @@ bash scripts/web-deps.sh
 bash scripts/meshes.sh out/meshes >/dev/null  # the meshes lessons and scenes name
 BUILD=${1:-build-web}
 start=$SECONDS
-emcmake cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+emcmake cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DSW_WEB_CACHE="${STEPWISE_WEB_CACHE:-/var/cache/stepwise-web}" >/dev/null
 cmake --build "$BUILD" -j"$(nproc)" --target stepwise-web
 mkdir -p out/web
 cp "$BUILD/visualizer/stepwise.html" out/web/stepwise.html
