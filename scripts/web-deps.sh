@@ -105,7 +105,7 @@ $entries"
     rm -f "$PREFIX/.src-updated"
   fi
 fi
-if ! apt-cache showsrc gmp 2>/dev/null | grep -q '^Package: gmp$'; then
+if ! apt-cache showsrc gmp 2>/dev/null | grep '^Package: gmp$' >/dev/null; then  # grep reads it all (-q would close the pipe early)
   say "fetching the source indexes"
   if [ -e "$SRC_LIST" ]; then   # only the deb-src entries: other repositories are not touched
     $SUDO apt-get update -qq -o Dir::Etc::SourceList="$SRC_LIST" -o Dir::Etc::SourceParts=/nonexistent \
