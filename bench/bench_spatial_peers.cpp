@@ -1,6 +1,5 @@
 // The BVH against its peers, one thread, plain main printing Markdown tables:
-//  - queries: untraced double bvh-traverse (built once, then bvh_query per ray), and its wide fast
-//    path (bvh_wide.hpp, which must give the same answers bit for bit), against Embree 3's
+//  - queries: untraced double bvh-traverse (built once, then bvh_query per ray) against Embree 3's
 //    rtcIntersect1 and CGAL's AABB_tree (Epick, first_intersection), on CGAL's real meshes (bunny,
 //    armadillo, dragon, elephant: scripts/meshes.sh) and generated ones, with primary rays from a
 //    camera framing the mesh and incoherent rays (random origins and directions). Every ray where
@@ -19,13 +18,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <list>
 #include "spatial/bvh_cases.hpp"
 #include "spatial/bvh_traverse.hpp"
-#include "spatial/bvh_wide.hpp"
 #include "spatial/kd_build.hpp"
 #include "spatial/kd_traverse.hpp"
 #include "spatial/spatial_common.hpp"
@@ -142,8 +139,7 @@ using CTree = CGAL::AABB_tree<CGAL::AABB_traits<K, Prim>>;
 struct SetReport {
   std::string mesh, rays;
   std::size_t n_tris = 0, n_rays = 0;
-  double ours = 0, wide = 0, embree = 0, cgal = 0, kd = 0;  // rays per second (kd: kd-traverse, double)
-  std::size_t wide_differs = 0;  // rays where the wide path's answer is not bvh-traverse's, bit for bit
+  double ours = 0, embree = 0, cgal = 0, kd = 0;  // rays per second (kd: kd-traverse, double)
   std::size_t hits = 0;
   std::size_t dis_embree = 0, dis_cgal = 0, dis_kd = 0, decided = 0, kd_wrong = 0;
   // Who is right among those decided exactly: ours (double), Embree, CGAL wrong counts; ties:
@@ -161,27 +157,20 @@ template <class F> double best_time(int reps, F&& f) {
   return best;
 }
 
-SetReport run_set(const std::string& name, const Mesh& m, const std::vector<Tri>& tris, const spatial::Bvh<double>& bvh, const spatial::BvhWide& wide,
+SetReport run_set(const std::string& name, const Mesh& m, const std::vector<Tri>& tris, const spatial::Bvh<double>& bvh,
                   const spatial::KdTree<double, 3>& kd, const std::vector<oracle::Triangle3>& qtris, const spatial::Bvh<Rational>& qbvh, const std::string& kind,
                   const std::vector<RayIn>& rays, [[maybe_unused]] void* scene, const CTree& ctree, const CList& clist) {
   SetReport rep;
   rep.mesh = name, rep.rays = kind, rep.n_tris = m.size(), rep.n_rays = rays.size();
   NoProbe none;
   std::vector<std::int32_t> ours(rays.size()), emb(rays.size(), -2), cg(rays.size()), kds(rays.size());
-  std::vector<spatial::BvhHit<double>> binary(rays.size()), wides(rays.size());
   const spatial::BvhQuery<double> q;
   rep.ours = rays.size() / best_time(3, [&] {
-    for (std::size_t i = 0; i < rays.size(); ++i) binary[i] = spatial::bvh_query<double>(bvh, tris, dray(rays[i]), q, none);
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      const auto h = spatial::bvh_query<double>(bvh, tris, dray(rays[i]), q, none);
+      ours[i] = h.hit ? h.prim : -1;
+    }
   });
-  rep.wide = rays.size() / best_time(3, [&] {
-    for (std::size_t i = 0; i < rays.size(); ++i) wides[i] = spatial::bvh_query(wide, bvh, tris, dray(rays[i]), q);
-  });
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    const auto &a = binary[i], &b = wides[i];
-    ours[i] = a.hit ? a.prim : -1;
-    rep.wide_differs += a.hit != b.hit || a.prim != b.prim || std::memcmp(&a.t, &b.t, sizeof a.t) != 0 || std::memcmp(&a.b, &b.b, sizeof a.b) != 0 ||
-                        a.nodes_visited != b.nodes_visited || a.prim_tests != b.prim_tests;
-  }
   rep.kd = rays.size() / best_time(3, [&] {
     for (std::size_t i = 0; i < rays.size(); ++i) {
       const auto h = spatial::kd_traverse_tree<double>(kd, tris, dray(rays[i]), none);
@@ -290,7 +279,6 @@ int main(int argc, char** argv) {
     qtris.reserve(m.size());
     for (std::size_t i = 0; i < m.size(); ++i) qtris.push_back(m.triangle<Rational>(i));
     const auto qbvh = exact_copy(bvh);
-    const spatial::BvhWide wide = spatial::bvh_widen(bvh);
     std::vector<spatial::Box<double, 3>> boxes;
     for (const auto& tr : tris) boxes.push_back(spatial::triangle_bounds(tr));
     const spatial::KdTree<double, 3> kd = spatial::kd_build<double, 3>(boxes, false, none);
@@ -312,25 +300,24 @@ int main(int argc, char** argv) {
     const auto prim = primary_rays(m, 256), inco = incoherent_rays(m, 65536, 7);
     std::printf("| %s | %zu | %.1f | %zu | %zu | %zu | %.2f | %zu wrong |\n", name.c_str(), m.size(), tb * 1e3, bvh.nodes.size(), bvh.leaves, bvh.depth, sah_cost(bvh),
                 check_classifier(m, qtris, qbvh, inco));
-    reports.push_back(run_set(name, m, tris, bvh, wide, kd, qtris, qbvh, "primary 256^2", prim, scene, ctree, clist));
-    reports.push_back(run_set(name, m, tris, bvh, wide, kd, qtris, qbvh, "incoherent", inco, scene, ctree, clist));
+    reports.push_back(run_set(name, m, tris, bvh, kd, qtris, qbvh, "primary 256^2", prim, scene, ctree, clist));
+    reports.push_back(run_set(name, m, tris, bvh, kd, qtris, qbvh, "incoherent", inco, scene, ctree, clist));
     if (name.rfind("height grid", 0) == 0) {
       std::vector<RayIn> edge;
       std::mt19937_64 r2(11);
       for (int i = 0; i < 65536; ++i) edge.push_back(spatial::cases::grid_ray(m, 256, 256, r2, i % 3));
-      reports.push_back(run_set(name, m, tris, bvh, wide, kd, qtris, qbvh, "through edges/vertices", edge, scene, ctree, clist));
+      reports.push_back(run_set(name, m, tris, bvh, kd, qtris, qbvh, "through edges/vertices", edge, scene, ctree, clist));
     }
 #ifdef SW_HAVE_EMBREE
     rtcReleaseScene(sc);
 #endif
     std::fflush(stdout);
   }
-  std::printf("\n| mesh | rays | n | hit | ours Mrays/s | wide Mrays/s | wide/ours | wide != ours | Embree Mrays/s | ours/Embree | wide/Embree | CGAL Mrays/s | ours != Embree | ours != CGAL | decided exactly | ours wrong | Embree wrong (+ties) | CGAL wrong (+ties) | agreeing sample ours right |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n| mesh | rays | n | hit | ours Mrays/s | Embree Mrays/s | ours/Embree | CGAL Mrays/s | ours != Embree | ours != CGAL | decided exactly | ours wrong | Embree wrong (+ties) | CGAL wrong (+ties) | agreeing sample ours right |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& r : reports)
-    std::printf("| %s | %s | %zu | %zu | %.3f | %.3f | %.2f | %zu | %.3f | %.2f | %.2f | %.3f | %zu | %zu | %zu | %zu | %zu (+%zu) | %zu (+%zu) | %zu/%zu |\n", r.mesh.c_str(), r.rays.c_str(), r.n_rays,
-                r.hits, r.ours / 1e6, r.wide / 1e6, r.wide / r.ours, r.wide_differs, r.embree / 1e6, r.embree > 0 ? r.ours / r.embree : 0.0,
-                r.embree > 0 ? r.wide / r.embree : 0.0, r.cgal / 1e6, r.dis_embree, r.dis_cgal, r.decided, r.ours_wrong, r.embree_wrong, r.embree_tie, r.cgal_wrong, r.cgal_tie,
+    std::printf("| %s | %s | %zu | %zu | %.3f | %.3f | %.2f | %.3f | %zu | %zu | %zu | %zu | %zu (+%zu) | %zu (+%zu) | %zu/%zu |\n", r.mesh.c_str(), r.rays.c_str(), r.n_rays, r.hits, r.ours / 1e6,
+                r.embree / 1e6, r.embree > 0 ? r.ours / r.embree : 0.0, r.cgal / 1e6, r.dis_embree, r.dis_cgal, r.decided, r.ours_wrong, r.embree_wrong, r.embree_tie, r.cgal_wrong, r.cgal_tie,
                 r.sample_ok, r.sample);
   // kd-traverse (untraced double, over a kd-build of the same mesh) on the same rays.
   std::printf("\n| mesh | rays | kd-traverse Mrays/s | kd/Embree | kd/bvh-traverse | kd != bvh-traverse | kd wrong (decided exactly) |\n|---|---|---|---|---|---|---|\n");

@@ -70,30 +70,18 @@ template <class Step, class Num> void record_stack(Step& s, const Bvh<Num>& bvh,
 }
 }  // namespace bvh_detail
 
-// How the walk tests a node's box: here one box at a time with ray-box, each a nested listing.
-// bvh_wide.hpp's WideBoxes gives the same answers, bit for bit, from 4-wide tests (untraced double).
-template <class Num> struct RayBoxes {
-  const Bvh<Num>& bvh;
-  const ray::Ray3<Num>& r;
-  template <StepProbe Probe> [[gnu::always_inline]] ray::BoxHit<Num> test(std::int32_t node, Probe& probe) {
-    const auto call = nested<ray::RayBox>(probe);
-    return ray::ray_box<Num>(r, bvh.nodes[node].box.lo, bvh.nodes[node].box.hi, probe);
-  }
-  // The children's boxes of inner node n, left then right.
-  template <StepProbe Probe> [[gnu::always_inline]] std::array<ray::BoxHit<Num>, 2> children(std::int32_t n, Probe& probe) {
-    return {test(bvh.nodes[n].left, probe), test(bvh.nodes[n].right, probe)};
-  }
-};
-
-// The traversal of a built BVH (what bvh-traverse does after its build), its boxes tested by
-// `boxes` (RayBoxes above, or WideBoxes). Precondition: bvh built over tris; r.d != 0;
-// q.t_max > 0 when q.any.
-template <NumberType Num, StepProbe Probe, class Boxes>
-BvhHit<Num> bvh_walk(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r,
-                     const BvhQuery<Num>& q, Boxes& boxes, Probe& probe) {
+// The traversal of a built BVH (what bvh-traverse does after its build). Precondition: bvh built
+// over tris; r.d != 0; q.t_max > 0 when q.any.
+template <NumberType Num, StepProbe Probe = NoProbe>
+BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r,
+                      const BvhQuery<Num>& q, Probe& probe) {
   using L = BvhTraverse;
   BvhHit<Num> out;
-  const ray::BoxHit<Num> root = boxes.test(0, probe);
+  auto box_test = [&](std::int32_t node) __attribute__((always_inline)) {
+    const auto call = nested<ray::RayBox>(probe);
+    return ray::ray_box<Num>(r, bvh.nodes[node].box.lo, bvh.nodes[node].box.hi, probe);
+  };
+  const ray::BoxHit<Num> root = box_test(0);
   if constexpr (Probe::on) {
     auto& s = probe.step(L::root, root.hit ? StepKind::decide : StepKind::miss).idx("hit", root.hit);
     if (root.hit) s.num("t_entry", root.t_near);
@@ -137,7 +125,7 @@ BvhHit<Num> bvh_walk(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>
       }
       continue;
     }
-    const auto [hl, hr] = boxes.children(e.node, probe);
+    const ray::BoxHit<Num> hl = box_test(nd.left), hr = box_test(nd.right);
     if constexpr (Probe::on) {
       auto& s = probe.step(L::boxes, StepKind::decide)
                     .idx("left", nd.left)
@@ -163,14 +151,6 @@ BvhHit<Num> bvh_walk(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>
   }
   if constexpr (Probe::on) record_done<L>(out, probe);
   return out;
-}
-
-// The query through bvh with ray-box, one box at a time.
-template <NumberType Num, StepProbe Probe = NoProbe>
-BvhHit<Num> bvh_query(const Bvh<Num>& bvh, const std::vector<std::array<Vec3<Num>, 3>>& tris, const ray::Ray3<Num>& r,
-                      const BvhQuery<Num>& q, Probe& probe) {
-  RayBoxes<Num> boxes{bvh, r};
-  return bvh_walk<Num>(bvh, tris, r, q, boxes, probe);
 }
 
 // The listing: the build (a nested bvh-build), then the query.
