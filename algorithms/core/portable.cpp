@@ -1,5 +1,4 @@
 #include "core/portable.hpp"
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -59,12 +58,12 @@ std::string scientific_text(const Decimal& d) {
 std::string fixed_text(const Decimal& d, double x) {
   const std::string& n = d.digits;
   const int len = static_cast<int>(n.size());
-  std::string t = d.negative ? "-" : "";
   if (d.exp >= len - 1) {
     char exact[400];
     std::snprintf(exact, sizeof exact, "%.0f", x);
     return exact;
   }
+  const std::string t = d.negative ? "-" : "";
   if (d.exp >= 0) return t + n.substr(0, static_cast<std::size_t>(d.exp) + 1) + "." + n.substr(static_cast<std::size_t>(d.exp) + 1);
   return t + "0." + std::string(static_cast<std::size_t>(-d.exp - 1), '0') + n;
 }
@@ -105,7 +104,6 @@ template <class F> char* shortest(char* first, F x) {
       break;
     }
   }
-  if (found.digits.empty()) found = parse_scientific("0e+00");  // not reached: 17 digits read back
   while (found.digits.size() > 1 && found.digits.back() == '0') found.digits.pop_back();
   const std::string fixed = fixed_text(found, static_cast<double>(x)), sci = scientific_text(found);
   return put(fixed.size() <= sci.size() ? fixed : sci);
@@ -122,7 +120,6 @@ bool parse_double(std::string_view s, double& out) {
   if (s.find_first_of("xX") != std::string_view::npos) return false;  // no hexadecimal in the general format
   const std::string text(s);
   char* end = nullptr;
-  errno = 0;
   const double d = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size()) return false;
   const bool inf_text = text.find_first_of("iI") != std::string::npos;
