@@ -95,6 +95,9 @@ apply_mutant() {  # file old-file new-file: writes the file anew (fresh mtime)
 mkdir -p "$WORK"
 COUNT=$(parse_list)
 field() { cat "$WORK/mutants/$1/$2"; }
+# The ids, read once without a process each (the selection below compares every name with all).
+IDS=()
+for ((n = 1; n <= COUNT; n++)); do IFS= read -r 'IDS[n]' <"$WORK/mutants/$n/id" || true; done
 
 if ((LIST_ONLY)); then
   for ((n = 1; n <= COUNT; n++)); do
@@ -118,7 +121,7 @@ if [[ -n $ONLY ]]; then
   for w in "${expanded[@]}"; do
     found=0
     for ((n = 1; n <= COUNT; n++)); do
-      if [[ $w == "$n" || $w == "$(field $n id)" ]]; then SELECTED+=("$n"); found=1; fi
+      if [[ $w == "$n" || $w == "${IDS[n]}" ]]; then SELECTED+=("$n"); found=1; fi
     done
     ((found)) || { echo "mutate: no mutant '$w'" >&2; exit 2; }
   done
