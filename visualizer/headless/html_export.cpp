@@ -21,28 +21,30 @@ namespace fs = std::filesystem;
 
 // Where the page goes. DIR may be new, an empty directory, or an earlier export (index.html, and
 // frames/ for a flip-book), which is replaced; anything else is refused, so no one's files are lost.
-// `option` names the flag in messages (--html, --frames).
+// `option` and `arg` name the flag and its value in messages (--html DIR, --frames DIR).
 struct Target {
-  std::string option;
+  std::string option, arg;
   fs::path dir, parent;
   bool exists = false, empty = false;
+  // The one-line error "OPTION ARG<what>".
+  InputError fail(const std::string& what) const { return InputError(option + " " + arg + what); }
 };
 
 Target check_target(const std::string& arg, const std::string& option) {
   if (arg.empty()) throw InputError(option + ": give the directory to write the page to");
   Target t;
-  t.option = option;
+  t.option = option, t.arg = arg;
   t.dir = fs::absolute(fs::path(arg)).lexically_normal();
   if (!t.dir.has_filename()) t.dir = t.dir.parent_path();  // "pages/" and "pages/." name "pages"
-  if (t.dir == t.dir.root_path()) throw InputError(option + " " + arg + ": refusing to write to the root directory");
+  if (t.dir == t.dir.root_path()) throw t.fail(": refusing to write to the root directory");
   t.parent = t.dir.parent_path();
   std::error_code ec;
   if (!fs::is_directory(t.parent, ec))
-    throw InputError(option + " " + arg + ": the directory " + t.parent.string() + " does not exist");
+    throw t.fail(": the directory " + t.parent.string() + " does not exist");
   const fs::file_status st = fs::symlink_status(t.dir, ec);
   if (st.type() == fs::file_type::not_found) return t;
-  if (st.type() == fs::file_type::symlink) throw InputError(option + " " + arg + " is a symbolic link; give the directory itself");
-  if (st.type() != fs::file_type::directory) throw InputError(option + " " + arg + " exists and is not a directory");
+  if (st.type() == fs::file_type::symlink) throw t.fail(" is a symbolic link; give the directory itself");
+  if (st.type() != fs::file_type::directory) throw t.fail(" exists and is not a directory");
   t.exists = true;
   std::size_t entries = 0;
   bool ours = true, index = false;
@@ -52,21 +54,20 @@ Target check_target(const std::string& arg, const std::string& option) {
     index |= name == "index.html" && it->is_regular_file();
     ours &= (name == "index.html" && it->is_regular_file()) || (name == "frames" && it->is_directory());
   }
-  if (ec) throw InputError(option + " " + arg + ": cannot read the directory (" + ec.message() + ")");
+  if (ec) throw t.fail(": cannot read the directory (" + ec.message() + ")");
   t.empty = entries == 0;
   if (!t.empty && (!ours || !index || entries > 2))
-    throw InputError(option + " " + arg +
-                     " holds files other than an earlier export (index.html, and frames/); refusing to replace it");
+    throw t.fail(" holds files other than an earlier export (index.html, and frames/); refusing to replace it");
   return t;
 }
 
 // A temporary sibling of DIR, removed unless committed.
 class TempDir {
  public:
-  TempDir(const Target& t, const std::string& arg) {
+  explicit TempDir(const Target& t) {
     std::string pattern = (t.parent / ("." + t.dir.filename().string() + ".tmp-XXXXXX")).string();
     if (!::mkdtemp(pattern.data()))
-      throw InputError(t.option + " " + arg + ": cannot write in " + t.parent.string() + " (" + std::strerror(errno) + ")");
+      throw t.fail(": cannot write in " + t.parent.string() + " (" + std::strerror(errno) + ")");
     path_ = pattern;
     // mkdtemp makes it 0700; the page is made to be served, so it takes the mode mkdir would give it.
     const mode_t mask = ::umask(0);
@@ -82,22 +83,22 @@ class TempDir {
   const fs::path& path() const { return path_; }
   // Moves the finished page to DIR: rename(2) replaces an empty directory; an earlier export is
   // moved aside first and removed once the new page is in place.
-  void commit(const Target& t, const std::string& arg) {
+  void commit(const Target& t) {
     std::error_code ec;
     if (t.exists && !t.empty) {
       const fs::path old = path_.string() + ".old";
       fs::rename(t.dir, old, ec);
-      if (ec) throw InputError(t.option + " " + arg + ": cannot move the earlier export aside (" + ec.message() + ")");
+      if (ec) throw t.fail(": cannot move the earlier export aside (" + ec.message() + ")");
       fs::rename(path_, t.dir, ec);
       if (ec) {
         std::error_code back;
         fs::rename(old, t.dir, back);
-        throw InputError(t.option + " " + arg + ": cannot move the page into place (" + ec.message() + ")");
+        throw t.fail(": cannot move the page into place (" + ec.message() + ")");
       }
       fs::remove_all(old, ec);
     } else {
       fs::rename(path_, t.dir, ec);
-      if (ec) throw InputError(t.option + " " + arg + ": cannot move the page into place (" + ec.message() + ")");
+      if (ec) throw t.fail(": cannot move the page into place (" + ec.message() + ")");
     }
     path_.clear();
   }
@@ -188,9 +189,8 @@ int export_frames(const ExportOptions& o) {
   const Json data = page_data(lesson, *session.model(0), from, to, w, h);
   const std::string page = lesson_page(lesson.title, lesson.intro.empty() ? std::string() : markdown_html(lesson.intro), data);
 
-  TempDir temp(target, o.frames_dir);
-  if (std::error_code ec; !fs::create_directory(temp.path() / "frames", ec))
-    throw InputError("--frames " + o.frames_dir + ": cannot create frames/ (" + ec.message() + ")");
+  TempDir temp(target);
+  if (std::error_code ec; !fs::create_directory(temp.path() / "frames", ec)) throw target.fail(": cannot create frames/ (" + ec.message() + ")");
   for (std::size_t s = from; s <= to; ++s) {
     app.restart_view();  // each frame as `stepwise render --lesson --step s` draws it, from the opening view
     session.set_step(s);
@@ -200,9 +200,9 @@ int export_frames(const ExportOptions& o) {
     std::ofstream f(temp.path() / "index.html", std::ios::binary);
     f << page;
     f.close();
-    if (!f) throw InputError("--frames " + o.frames_dir + ": cannot write index.html");
+    if (!f) throw target.fail(": cannot write index.html");
   }
-  temp.commit(target, o.frames_dir);
+  temp.commit(target);
   std::cerr << "stepwise: wrote " << (to - from + 1) << " frames (steps " << from << ".." << to << ") and index.html to "
             << target.dir.string() << '\n';
   return 0;
@@ -245,14 +245,14 @@ int export_app_page(const ExportOptions& o) {
   const Json carried = {{"files", files}, {"lesson", files[0]["path"]}, {"step", o.from ? Json(*o.from) : Json()}};
   page.replace(at, marker.size(), "var stepwiseLesson = " + script_safe_json(carried) + ";");
 
-  TempDir temp(target, o.html_dir);
+  TempDir temp(target);
   {
     std::ofstream f(temp.path() / "index.html", std::ios::binary);
     f << page;
     f.close();
-    if (!f) throw InputError("--html " + o.html_dir + ": cannot write index.html");
+    if (!f) throw target.fail(": cannot write index.html");
   }
-  temp.commit(target, o.html_dir);
+  temp.commit(target);
   std::cerr << "stepwise: wrote " << (target.dir / "index.html").string() << " (" << page.size() / 1024
             << " KiB): the app, opened on " << lesson.title << '\n';
   return 0;
