@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include "input.hpp"
@@ -16,14 +17,21 @@
 
 namespace {
 
-// One directory per fuzzing process, for its file of the moment.
+// One directory per fuzzing process, for its file of the moment; removed when the fuzzer exits
+// normally (a crash leaves it beside the crash file).
 const std::string& work_dir() {
-  static const std::string dir = [] {
-    std::string t = "/tmp/sw-fuzz-files-XXXXXX";
-    if (!mkdtemp(t.data())) std::abort();
-    return t;
-  }();
-  return dir;
+  struct Dir {
+    std::string path = (std::filesystem::temp_directory_path() / "sw-fuzz-files-XXXXXX").string();
+    Dir() {
+      if (!mkdtemp(path.data())) std::abort();
+    }
+    ~Dir() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Dir dir;
+  return dir.path;
 }
 
 sw::Json scene_with(int kind, const std::string& file) {

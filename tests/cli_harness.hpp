@@ -1,6 +1,7 @@
 // Runs the `stepwise` binary for the CLI tests: exit code, stdout and stderr.
 #pragma once
 #include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -22,9 +23,24 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
-// A fresh scratch directory per test run.
+// This test process's scratch root, removed when the process exits normally (ctest runs each
+// case as its own process: without this every run left hundreds of directories in $TMPDIR). A
+// crash leaves it behind to look at.
+inline const std::filesystem::path& scratch_root() {
+  struct Root {
+    std::filesystem::path path = std::filesystem::temp_directory_path() / ("stepwise-test-" + std::to_string(::getpid()));
+    ~Root() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Root root;
+  return root.path;
+}
+
+// A fresh scratch directory under the process's root.
 inline std::filesystem::path scratch(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("stepwise-test-" + std::to_string(::getpid())) / name;
+  auto dir = scratch_root() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

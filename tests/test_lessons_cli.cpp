@@ -14,6 +14,7 @@
 namespace fs = std::filesystem;
 using sw::testing::Ran;
 using sw::testing::run_stepwise;
+using sw::testing::scratch;
 
 namespace {
 
@@ -34,8 +35,7 @@ TEST_CASE("lessons cli: lint exits 0 on the lessons, 1 with file and line on a b
 }
 
 TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers count, bad lines skipped and named", "[lesson][cli][quiz]") {
-  const fs::path dir = fs::temp_directory_path() / ("sw-quiz-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const fs::path dir = scratch("quiz");
   fs::create_directories(dir / "class");
   // Bresenham (1, 2)-(13, 7): e = 2B - A = 2 * 5 - 12 = -2 is the first decision (by hand), asked at step 2.
   std::ofstream(dir / "class" / "ann.jsonl") << "{\"step\":2,\"answer\":\"negative\"}\n{\"step\":2,\"answer\":1}\nnot json\n";
@@ -82,6 +82,5 @@ TEST_CASE("lessons cli: quiz grades a class: a file per student, first answers c
   CHECK(o.status == 2);
   CHECK(o.out.empty());
   CHECK(std::count(o.err.begin(), o.err.end(), '\n') == 1);
-  fs::remove_all(dir);
 }
 #endif

@@ -2,11 +2,11 @@
 // handle for everything else. These count the parses (and the mesh files read) of what the CLI's
 // trace, run and check do, through the same runtime calls the CLI makes.
 #include <catch2/catch.hpp>
-#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include "catalog.hpp"
+#include "cli_harness.hpp"
 #include "spatial/spatial_common.hpp"
 #include "trace_io.hpp"
 
@@ -16,8 +16,7 @@ namespace {
 
 // A one-triangle mesh in a fresh temporary directory.
 std::filesystem::path write_mesh() {
-  const auto dir = std::filesystem::temp_directory_path() / ("sw-run-handle-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = sw::testing::scratch("run-handle");
   const auto path = dir / "one.off";
   std::ofstream(path) << "OFF\n3 1 0\n0 0 0\n4 0 0\n0 4 0\n3 0 1 2\n";
   return path;

@@ -3,10 +3,10 @@
 // a bad edit that changes nothing, number types, the compare stats, the quiz's gate and answers,
 // and the timeline. In sw_lessons, so the sanitizer build runs it too.
 #include <catch2/catch.hpp>
-#include <unistd.h>
 #include <fstream>
 #include "lessons/grading.hpp"
 #include "lessons/session.hpp"
+#include "cli_harness.hpp"
 #include "host_options.hpp"
 #include "source_paths.hpp"
 
@@ -227,8 +227,7 @@ TEST_CASE("session: the quiz holds stepping at each question until it is answere
 }
 
 TEST_CASE("session: quiz answers are saved as given, and grade_class grades the file", "[session][quiz]") {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("sw-answers-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir = sw::testing::scratch("answers");
   Session s(kLessons);
   REQUIRE(s.open_lesson(kLessons / "01-dda-line.md"));
   s.save_answers_in(dir / "ann", "ann\nforged");
@@ -257,7 +256,6 @@ TEST_CASE("session: quiz answers are saved as given, and grade_class grades the 
   s.set_step(s.steps() - 1);
   REQUIRE(s.answer(Json::array({3, 3})));
   CHECK_THAT(s.answers_error(), Catch::StartsWith("cannot save the answers"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("session: the timeline steps, seeks, steps over nested calls and plays", "[session]") {

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "cli_harness.hpp"
 #include "headless/headless.hpp"
 #include "panels/orbit_canvas.hpp"
 #include "source_paths.hpp"
@@ -283,9 +284,7 @@ TEST_CASE("visualizer classroom: the 3D view's labels never overlap", "[visualiz
 
 TEST_CASE("visualizer classroom: --scale out of range exits 2 with one line and writes nothing", "[visualizer][classroom][cli]") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("sw-vis-scale-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = sw::testing::scratch("scale");
   const std::string lesson = (fs::path(SW_SOURCE_DIR) / "lessons" / "01-dda-line.md").string();
   auto run = [&](const std::string& exe, const std::string& args) {
     const int rc = std::system((exe + " " + args + " 2>" + (dir / "err.txt").string() + " >/dev/null").c_str());
@@ -309,7 +308,6 @@ TEST_CASE("visualizer classroom: --scale out of range exits 2 with one line and 
   CHECK_THAT(gui.second, Catch::Contains("--scale 9"));
   CHECK(run(render, "--scale 2 --present").first == 0);
   CHECK(fs::exists(dir / "x.png"));
-  fs::remove_all(dir);
 }
 
 #endif

@@ -2,11 +2,11 @@
 // file) and `stepwise-gui` under xvfb-run (frames, screenshot, exit 0).
 #ifdef SW_HAVE_VISUALIZER
 #include <catch2/catch.hpp>
+#include "cli_harness.hpp"
 #include "peers.hpp"
 #include <gif_lib.h>
 #include <stb_image.h>
 #include <sys/wait.h>
-#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,28 +16,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using sw::testing::scratch;
+using sw::testing::sh_quote;
+
 struct Result {
   int status = -1;
   std::string err;
 };
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-fs::path scratch_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("sw-vis-cli-" + std::to_string(::getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 // Runs a shell command line; returns the exit status and what it wrote to stderr.
 Result run(const std::string& cmd, const fs::path& dir) {
   const fs::path err = dir / "stderr.txt";
-  const int rc = std::system((cmd + " 2>" + quote(err.string()) + " >/dev/null").c_str());
+  const int rc = std::system((cmd + " 2>" + sh_quote(err.string()) + " >/dev/null").c_str());
   std::ifstream f(err);
   std::ostringstream s;
   s << f.rdbuf();
@@ -53,8 +43,8 @@ Result run_gui(const std::string& cmd, const fs::path& dir) {
   return r;
 }
 
-std::string stepwise() { return quote(SW_STEPWISE_EXE); }
-std::string lesson(const char* name) { return quote((fs::path(SW_SOURCE_DIR) / "lessons" / name).string()); }
+std::string stepwise() { return sh_quote(SW_STEPWISE_EXE); }
+std::string lesson(const char* name) { return sh_quote((fs::path(SW_SOURCE_DIR) / "lessons" / name).string()); }
 
 // Only the scratch files the test made itself: nothing partial left behind.
 bool only_files(const fs::path& dir, std::initializer_list<const char*> names) {
@@ -71,9 +61,9 @@ bool only_files(const fs::path& dir, std::initializer_list<const char*> names) {
 }  // namespace
 
 TEST_CASE("visualizer cli: stepwise render: a PNG of a lesson step", "[visualizer][cli]") {
-  const fs::path dir = scratch_dir("png");
+  const fs::path dir = scratch("png");
   const fs::path out = dir / "frame.png";
-  const Result r = run(stepwise() + " render --lesson " + lesson("01-dda-line.md") + " --step 9 --size 480x300 --out " + quote(out.string()), dir);
+  const Result r = run(stepwise() + " render --lesson " + lesson("01-dda-line.md") + " --step 9 --size 480x300 --out " + sh_quote(out.string()), dir);
   INFO(r.err);
   REQUIRE(r.status == 0);
   int w = 0, h = 0, n = 0;
@@ -85,10 +75,10 @@ TEST_CASE("visualizer cli: stepwise render: a PNG of a lesson step", "[visualize
 }
 
 TEST_CASE("visualizer cli: stepwise render: a GIF has one frame per step of the inclusive range", "[visualizer][cli]") {
-  const fs::path dir = scratch_dir("gif");
+  const fs::path dir = scratch("gif");
   const fs::path out = dir / "anim.gif";
   const Result r = run(stepwise() + " render --algorithm bresenham-line --input '{\"p0\":[0,0],\"p1\":[6,2]}' --numeric int" +
-                           " --gif " + quote(out.string()) + " --from 3 --to 9 --delay 100 --size 400x260",
+                           " --gif " + sh_quote(out.string()) + " --from 3 --to 9 --delay 100 --size 400x260",
                        dir);
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -106,7 +96,7 @@ TEST_CASE("visualizer cli: stepwise render: a GIF has one frame per step of the 
 }
 
 TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments exit 2 with one line and no file", "[visualizer][cli]") {
-  const fs::path dir = scratch_dir("bad");
+  const fs::path dir = scratch("bad");
   const fs::path out = dir / "frame.png", gif = dir / "anim.gif";
   struct Case {
     const char* name;
@@ -136,14 +126,14 @@ TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments 
     INFO(c.name);
     std::ofstream(dir / "lesson.md") << c.lesson_text;
     const bool as_gif = c.args.find("--from") != std::string::npos;
-    const std::string target = as_gif ? " --gif " + quote(gif.string()) : " --out " + quote(out.string());
-    const Result r = run(stepwise() + " render --lesson " + quote((dir / "lesson.md").string()) + c.args + target + " --size 400x260", dir);
+    const std::string target = as_gif ? " --gif " + sh_quote(gif.string()) : " --out " + sh_quote(out.string());
+    const Result r = run(stepwise() + " render --lesson " + sh_quote((dir / "lesson.md").string()) + c.args + target + " --size 400x260", dir);
     CHECK(r.status == 2);
     CHECK_THAT(r.err, Catch::Contains(c.message));
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(only_files(dir, {"lesson.md", "stderr.txt"}));
   }
-  const Result unknown = run(stepwise() + " render --algorithm nope --input '{}' --out " + quote(out.string()), dir);
+  const Result unknown = run(stepwise() + " render --algorithm nope --input '{}' --out " + sh_quote(out.string()), dir);
   CHECK(unknown.status == 2);
   CHECK_THAT(unknown.err, Catch::Contains("unknown algorithm 'nope'"));
   CHECK_FALSE(fs::exists(out));
@@ -151,10 +141,10 @@ TEST_CASE("visualizer cli: stepwise render: malformed lessons and bad arguments 
 
 TEST_CASE("visualizer gui: stepwise-gui starts under xvfb-run, renders frames, takes a screenshot and exits 0", "[visualizer][gui]") {
   SW_REQUIRE_PEER(std::system("command -v xvfb-run >/dev/null 2>&1") == 0, "xvfb-run");
-  const fs::path dir = scratch_dir("gui");
+  const fs::path dir = scratch("gui");
   const std::string xvfb = "xvfb-run -a -s '-screen 0 800x500x24' ";
   const fs::path shot = dir / "shot.png";
-  Result r = run_gui(xvfb + quote(SW_GUI_EXE) + " --size 800x500 --frames 4 --screenshot " + quote(shot.string()), dir);
+  Result r = run_gui(xvfb + sh_quote(SW_GUI_EXE) + " --size 800x500 --frames 4 --screenshot " + sh_quote(shot.string()), dir);
   INFO(r.err);
   REQUIRE(r.status == 0);
   int w = 0, h = 0, n = 0;
@@ -171,8 +161,8 @@ TEST_CASE("visualizer gui: stepwise-gui starts under xvfb-run, renders frames, t
   // A lesson that fails to load: the window shows the message, still writes its screenshot, exits 2.
   std::ofstream(dir / "bad.md") << "---\nalgorithm: dda-circle\ninput: {}\n---\n";
   const fs::path bad_shot = dir / "bad.png";
-  r = run_gui(xvfb + quote(SW_GUI_EXE) + " --size 800x500 --frames 2 --lesson " + quote((dir / "bad.md").string()) + " --screenshot " +
-              quote(bad_shot.string()),
+  r = run_gui(xvfb + sh_quote(SW_GUI_EXE) + " --size 800x500 --frames 2 --lesson " + sh_quote((dir / "bad.md").string()) + " --screenshot " +
+              sh_quote(bad_shot.string()),
               dir);
   INFO(r.err);
   CHECK(r.status == 2);

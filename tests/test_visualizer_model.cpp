@@ -4,10 +4,10 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <map>
-#include <unistd.h>
 #include <set>
 #include <random>
 #include "lessons/compare.hpp"
+#include "cli_harness.hpp"
 #include "fill_oracle.hpp"
 #include "lessons/lesson.hpp"
 #include "panels/pixel_layer.hpp"
@@ -123,7 +123,7 @@ TEST_CASE("visualizer lesson: malformed lessons name the problem and the place",
 }
 
 TEST_CASE("visualizer lesson: show opens a declared view, and a relative mesh is found beside the lesson", "[visualizer][lesson]") {
-  const auto dir = std::filesystem::temp_directory_path() / ("stepwise-lesson-" + std::to_string(::getpid()));
+  const auto dir = sw::testing::scratch("lesson");
   std::filesystem::create_directories(dir / "m");
   std::ofstream(dir / "m" / "t.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   std::ofstream(dir / "l.md") << "---\nalgorithm: bvh-build\ninput: {\"mesh\":\"m/t.off\"}\nshow: orbit3d\n---\nIntro.\n";
@@ -131,7 +131,6 @@ TEST_CASE("visualizer lesson: show opens a declared view, and a relative mesh is
   REQUIRE(l.show);
   CHECK(*l.show == View::orbit3d);
   CHECK(l.input["mesh"] == (dir / "m" / "t.off").lexically_normal().string());
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("visualizer model: plot order, cell lookup and state with changes", "[visualizer][model]") {

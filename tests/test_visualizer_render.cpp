@@ -6,7 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <set>
-#include <unistd.h>
+#include "cli_harness.hpp"
 #include "headless/headless.hpp"
 #include "host_pixels.hpp"
 #include "panels/pixel_layer.hpp"
@@ -122,8 +122,7 @@ TEST_CASE("visualizer render: a lesson that fails to load shows its error, never
   HeadlessHost host(640, 400);
   App& app = host.app();
   Session& session = app.session();
-  const auto dir = std::filesystem::temp_directory_path() / ("sw-vis-bad-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = sw::testing::scratch("bad-lesson");
   const auto bad = dir / "bad.md";
   std::ofstream(bad) << "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0]}\n---\n";
   CHECK_FALSE(session.open_lesson(bad));
@@ -135,7 +134,6 @@ TEST_CASE("visualizer render: a lesson that fails to load shows its error, never
   CHECK_FALSE(session.open_lesson(dir / "missing.md"));
   CHECK(session.loaded());
   host.render();
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("visualizer render: dragging p1 re-runs the trace and keeps the relative position", "[visualizer][render]") {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include "catalog.hpp"
+#include "cli_harness.hpp"
 #include "lighting/shade_common.hpp"
 #include "lighting/shade_input.hpp"
 #include "lighting/shade_oracle_case.hpp"
@@ -206,8 +207,7 @@ TEST_CASE("shade: bad input is one InputError line", "[lighting][shade]") {
   }
   CHECK_NOTHROW((void)(*a).open(good, Numeric::reference));
   // The CLI: exit 2, one line, and no partial trace file.
-  const auto out = std::filesystem::temp_directory_path() / "sw_shade_bad_input.jsonl";
-  std::filesystem::remove(out);
+  const auto out = sw::testing::scratch("shade-bad-input") / "t.jsonl";
   const std::string cmd = std::string("\"") + SW_STEPWISE_EXE + "\" trace shade --numeric float --input '" + bad("/n", {0, 0, 0}).dump() +
                           "' --out " + out.string() + " 2>/dev/null";
   const int rc = std::system(cmd.c_str());
