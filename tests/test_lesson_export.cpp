@@ -175,12 +175,15 @@ TEST_CASE("visualizer lesson export --html: the app's page, carrying the lesson 
   CHECK(html.substr(0, at) == page.substr(0, at));
   CHECK(html.substr(html.size() - (page.size() - at - 26)) == page.substr(at + 26));
 
-  // A teacher's own lesson outside the tree, with an included file: both go in, at their paths
-  // relative to the lesson; no --from: it opens where the lesson says.
+  // A teacher's own lesson outside the tree, with included files: all go in, at their paths
+  // relative to the lesson (one in a folder beside the lesson's); no --from: it opens where the
+  // lesson says.
   const fs::path mine = dir / "mine";
   fs::create_directories(mine / "parts");
+  fs::create_directories(dir / "shared");
   { std::ofstream(mine / "parts" / "extra.md") << "## on line delta\nThe walk starts </script> here.\n"; }
-  { std::ofstream(mine / "walk.md") << "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[5,2]}\ninclude: parts/extra.md\n---\n# My walk\n"; }
+  { std::ofstream(dir / "shared" / "more.md") << "## on line plot\nA pixel.\n"; }
+  { std::ofstream(mine / "walk.md") << "---\nalgorithm: dda-line\ninput: {\"p0\":[0,0],\"p1\":[5,2]}\ninclude: parts/extra.md, ../shared/more.md\n---\n# My walk\n"; }
   r = run_stepwise("lesson export " + sh_quote((mine / "walk.md").string()) + " --html " + sh_quote((dir / "walk").string()));
   INFO(r.err);
   REQUIRE(r.status == 0);
@@ -189,9 +192,11 @@ TEST_CASE("visualizer lesson export --html: the app's page, carrying the lesson 
   const sw::Json carried = carried_lesson(walk);
   CHECK(carried["lesson"] == "/stepwise/lessons/walk.md");
   CHECK(carried["step"].is_null());
-  REQUIRE(carried["files"].size() == 2);
+  REQUIRE(carried["files"].size() == 3);
   CHECK(carried["files"][1]["path"] == "/stepwise/lessons/parts/extra.md");
   CHECK(carried["files"][1]["text"] == "## on line delta\nThe walk starts </script> here.\n");
+  CHECK(carried["files"][2]["path"] == "/stepwise/shared/more.md");  // where ../shared/more.md leads from the lesson
+  CHECK(carried["files"][2]["text"] == "## on line plot\nA pixel.\n");
 
   // Refused, with nothing written: the flip-book's options, a step past the end, a bad lesson, and
   // a data root without the page.

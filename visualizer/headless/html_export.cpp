@@ -237,11 +237,14 @@ int export_app_page(const ExportOptions& o) {
   const std::string marker = "var stepwiseLesson = null;";
   const std::size_t at = page.find(marker);
   if (at == std::string::npos) throw InputError(page_file.string() + " is not stepwise's browser page (no stepwiseLesson)");
+  // In the page the lesson sits in /stepwise/lessons and each include where its path relative to the
+  // lesson leads from there (written normalised: ../shared/x.md is /stepwise/shared/x.md).
   const fs::path lesson_dir = fs::absolute(o.lesson).parent_path();
-  const std::string root = "/stepwise/lessons/";
-  Json files = Json::array({{{"path", root + fs::path(o.lesson).filename().string()}, {"text", read_text(o.lesson, "the lesson")}}});
+  const fs::path root = "/stepwise/lessons";
+  Json files = Json::array({{{"path", (root / fs::path(o.lesson).filename()).generic_string()}, {"text", read_text(o.lesson, "the lesson")}}});
   for (const fs::path& inc : lesson.includes)
-    files.push_back({{"path", root + fs::relative(fs::absolute(inc), lesson_dir).generic_string()}, {"text", read_text(inc, "the included file")}});
+    files.push_back({{"path", (root / fs::relative(fs::absolute(inc), lesson_dir)).lexically_normal().generic_string()},
+                     {"text", read_text(inc, "the included file")}});
   const Json carried = {{"files", files}, {"lesson", files[0]["path"]}, {"step", o.from ? Json(*o.from) : Json()}};
   page.replace(at, marker.size(), "var stepwiseLesson = " + script_safe_json(carried) + ";");
 
