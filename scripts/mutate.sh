@@ -101,7 +101,7 @@ for ((n = 1; n <= COUNT; n++)); do IFS= read -r 'IDS[n]' <"$WORK/mutants/$n/id" 
 
 if ((LIST_ONLY)); then
   for ((n = 1; n <= COUNT; n++)); do
-    printf '%3d  %-28s %-40s %s\n' "$n" "$(field $n id)" "$(field $n file)" "$(field $n why)"
+    printf '%3d  %-28s %-40s %s\n' "$n" "${IDS[n]}" "$(field $n file)" "$(field $n why)"
   done
   exit 0
 fi
@@ -133,7 +133,7 @@ fi
 stale=0
 for n in "${SELECTED[@]}"; do
   if ! c=$(occurrences "$ROOT/$(field $n file)" "$WORK/mutants/$n/old"); then
-    echo "mutate: mutant $n ($(field $n id)): its original text occurs $c times in $(field $n file), not once; refresh tests/mutants.txt" >&2
+    echo "mutate: mutant $n (${IDS[n]}): its original text occurs $c times in $(field $n file), not once; refresh tests/mutants.txt" >&2
     stale=1
   fi
 done
@@ -217,7 +217,7 @@ trap 'exit 130' INT TERM
 caught=0 total=0 missed=()
 started=$SECONDS
 for n in "${SELECTED[@]}"; do
-  id=$(field $n id) file=$(field $n file) regex=""
+  id=${IDS[n]} file=$(field $n file) regex=""
   ((FULL)) || regex=$(field $n tests)
   t0=$SECONDS
   cp "$SRC/$file" "$WORK/original"
